@@ -1,0 +1,150 @@
+// mocapfill convert: any importable file to .gltf, .glb or .bvh; many files at once in
+// one process, spread over all cores.
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "converter/commands.h"
+#include "converter/console.h"
+#include "converter/exit_codes.h"
+#include "converter/import_flags.h"
+#include "formats/file_io.h"
+#include "formats/motion_io.h"
+
+namespace mocapfill::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ConvertArgs {
+  std::vector<std::string> inputs;
+  std::string output;      // second positional: an output file (single input)
+  std::string output_dir;  // -o: a folder for one or many inputs
+  std::string format = "glb";
+  int jobs = 0;
+  ImportOptions import;
+  ExportOptions export_options;
+};
+
+struct Job {
+  std::string input;
+  std::string output;
+};
+
+// Converts one file; returns the exit code and prints any error.
+int ConvertOne(const Job& job, const ConvertArgs& args, const std::vector<std::string>& all_inputs) {
+  for (const std::string& in : all_inputs) {
+    if (IsSameFile(in, job.output) || fs::path(in).lexically_normal() == fs::path(job.output).lexically_normal()) {
+      PrintError(job.output + ": refusing to overwrite input file");
+      return kExitOutput;
+    }
+  }
+  Result<Scene> scene = ImportFile(job.input, args.import);
+  if (!scene.ok()) {
+    PrintError(scene.status().message());
+    return ExitCodeFor(scene.status(), Stage::kInput);
+  }
+  for (const std::string& warning : scene->warnings) PrintWarning(job.input + ": " + warning);
+  const Status written = ExportFile(*scene, job.output, args.export_options);
+  if (!written.ok()) {
+    PrintError(written.message());
+    return ExitCodeFor(written, Stage::kOutput);
+  }
+  return kExitOk;
+}
+
+Result<std::vector<Job>> PlanJobs(const ConvertArgs& args) {
+  std::vector<Job> jobs;
+  if (!args.output.empty()) {
+    if (!args.output_dir.empty()) return InvalidArgument("give either an output file or -o DIR, not both");
+    if (args.inputs.size() != 1)
+      return InvalidArgument("several inputs need an output folder: mocapfill convert IN... -o DIR");
+    if (!IsExportExtension(args.output))
+      return InvalidArgument(args.output + ": output must end in .gltf, .glb or .bvh");
+    jobs.push_back({args.inputs[0], args.output});
+    return jobs;
+  }
+  if (args.output_dir.empty()) return InvalidArgument("missing output: mocapfill convert IN OUT, or IN... -o DIR");
+  std::error_code ec;
+  fs::create_directories(args.output_dir, ec);
+  if (!fs::is_directory(args.output_dir))
+    return IoError(args.output_dir + ": cannot create output folder");
+  for (const std::string& in : args.inputs)
+    jobs.push_back({in, (fs::path(args.output_dir) / fs::path(in).stem()).string() + "." + args.format});
+  // Two inputs with the same stem would write the same output: refuse before any work.
+  std::vector<std::string> outs;
+  for (const Job& job : jobs) outs.push_back(job.output);
+  std::sort(outs.begin(), outs.end());
+  const auto dup = std::adjacent_find(outs.begin(), outs.end());
+  if (dup != outs.end()) return InvalidArgument(*dup + ": two inputs would write this same output file");
+  return jobs;
+}
+
+int RunConvert(const ConvertArgs& args) {
+  Result<std::vector<Job>> planned = PlanJobs(args);
+  if (!planned.ok()) {
+    PrintError(planned.status().message());
+    return ExitCodeFor(planned.status(), Stage::kOutput);
+  }
+  const std::vector<Job>& jobs = *planned;
+  std::vector<int> codes(jobs.size(), kExitOk);
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const size_t workers = std::min<size_t>(jobs.size(), args.jobs > 0 ? args.jobs : hardware);
+  Progress progress("converting", jobs.size());
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < jobs.size(); i = next++) {
+      codes[i] = ConvertOne(jobs[i], args, args.inputs);
+      progress.Advance();
+    }
+  };
+  if (workers <= 1) {
+    work();
+  } else {
+    std::vector<std::thread> threads;
+    for (size_t t = 0; t < workers; ++t) threads.emplace_back(work);
+    for (std::thread& thread : threads) thread.join();
+  }
+  for (int code : codes)
+    if (code != kExitOk) return code;  // the first failure in input order decides
+  return kExitOk;
+}
+
+}  // namespace
+
+void AddConvertCommand(CLI::App& app, CommandAction& action) {
+  auto args = std::make_shared<ConvertArgs>();
+  CLI::App* command = app.add_subcommand("convert", "Convert BVH, glTF, GLB or FBX files to .glb, .gltf or .bvh");
+  command->add_option("inputs", args->inputs, "Input files (.bvh .gltf .glb .fbx), then optionally one output file")
+      ->required();
+  command->add_option("-o,--output-dir", args->output_dir, "Output folder for one or many inputs");
+  command->add_option("--format", args->format, "Output format with -o: glb, gltf or bvh")
+      ->check(CLI::IsMember({"glb", "gltf", "bvh"}))
+      ->capture_default_str();
+  command->add_option("-j,--jobs", args->jobs, "Parallel conversions (default: all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--out-unit", args->export_options.unit,
+                      "BVH output unit: auto (the source's unit), m, cm, mm, in, ft, cmu")
+      ->check(CLI::IsMember({"auto", "m", "cm", "mm", "in", "ft", "cmu"}))
+      ->capture_default_str();
+  AddImportFlags(*command, args->import);
+  command->footer(
+      "Examples:\n"
+      "  mocapfill convert walk.bvh walk.glb\n"
+      "  mocapfill convert clips/*.bvh -o out/            # batch, all cores\n"
+      "  mocapfill convert mocap.bvh mocap.glb --unit cmu  # CMU units\n"
+      "  mocapfill convert rig.fbx rig.gltf --animation Take1\n"
+      "  mocapfill convert walk.glb walk.bvh");
+  command->callback([args, &action] {
+    // Without -o, the last positional is the output file: convert IN OUT.
+    if (args->output_dir.empty() && args->inputs.size() >= 2) {
+      args->output = args->inputs.back();
+      args->inputs.pop_back();
+    }
+    action = [args] { return RunConvert(*args); };
+  });
+}
+
+}  // namespace mocapfill::cli

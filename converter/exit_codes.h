@@ -1,0 +1,21 @@
+// Documented exit codes of the mocapfill CLI (see README "Exit codes").
+#pragma once
+
+#include "processing/core/status.h"
+
+namespace mocapfill::cli {
+
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitUsage = 1,       // bad command line, options or pipeline configuration
+  kExitInvalidInput = 2,  // an input file is unreadable, malformed or unsupported
+  kExitProcessing = 3,  // processing failed (solver, numerical or internal error)
+  kExitOutput = 4,      // an output file could not be written, or would overwrite an input
+};
+
+// Where a failure happened decides between "input" and "output" for I/O errors.
+enum class Stage { kInput, kProcessing, kOutput };
+
+ExitCode ExitCodeFor(const Status& status, Stage stage);
+
+}  // namespace mocapfill::cli

@@ -1,0 +1,58 @@
+#include "formats/motion_io.h"
+
+#include "formats/assimp/assimp_reader.h"
+#include "formats/bvh/bvh_reader.h"
+#include "formats/bvh/bvh_writer.h"
+#include "formats/file_io.h"
+#include "formats/gltf/gltf_reader.h"
+#include "formats/gltf/gltf_writer.h"
+
+namespace mocapfill {
+
+namespace {
+
+const char* const kAssimpExtensions[] = {".fbx", ".dae", ".x", ".3ds", ".ms3d", ".md5mesh", ".ogex", ".smd", ".b3d"};
+
+bool IsAssimpExtension(const std::string& ext) {
+  for (const char* e : kAssimpExtensions)
+    if (ext == e) return true;
+  return false;
+}
+
+}  // namespace
+
+bool IsImportExtension(const std::string& path) {
+  const std::string ext = LowerExtension(path);
+  return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || IsAssimpExtension(ext);
+}
+
+bool IsExportExtension(const std::string& path) {
+  const std::string ext = LowerExtension(path);
+  return ext == ".bvh" || ext == ".gltf" || ext == ".glb";
+}
+
+Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) {
+  const std::string ext = LowerExtension(path);
+  if (IsAssimpExtension(ext)) return ReadWithAssimp(path, options);
+  if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
+    return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
+  ASSIGN_OR_RETURN(std::string bytes, ReadFileBytes(path));
+  if (ext == ".bvh") return ReadBvh(bytes, path, options);
+  return ReadGltf(bytes, path, options);
+}
+
+Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options) {
+  const std::string ext = LowerExtension(path);
+  Result<std::string> bytes = Status();
+  if (ext == ".bvh") {
+    bytes = WriteBvh(scene, options);
+  } else if (ext == ".gltf" || ext == ".glb") {
+    bytes = WriteGltf(scene, ext == ".glb", options);
+  } else {
+    return InvalidArgument(path + ": unknown output extension '" + ext + "' (expected .gltf, .glb or .bvh)");
+  }
+  if (!bytes.ok()) return bytes.status().WithContext(path);
+  return WriteFileAtomic(path, *bytes);
+}
+
+}  // namespace mocapfill

@@ -1,0 +1,47 @@
+// Reading and writing motion files by extension. The only entry points the CLI and
+// the tests need; each format lives in its own folder behind these two functions.
+#pragma once
+
+#include <string>
+
+#include "processing/core/scene.h"
+#include "processing/core/status.h"
+
+namespace mocapfill {
+
+struct ImportOptions {
+  // Length unit of the source: "auto" (format default, or detected from skeleton height
+  // when that default is implausible), or one of "m", "cm", "mm", "in", "ft", "cmu"
+  // (the CMU/cgspeed unit, 0.056444 m). Everything is converted to metres on import.
+  std::string unit = "auto";
+  // Up axis of the source: "auto" (format default: Y for BVH/glTF, the file's own for FBX),
+  // "y" or "z". Z-up sources are rotated to glTF's Y-up on import.
+  std::string up = "auto";
+  // Sampling rate for keyed sources (glTF, FBX), Hz. 0 = detect from the key times.
+  double rate_hz = 0.0;
+  // glTF/FBX: which animation to import, by name or index. Empty = every animation.
+  std::string animation;
+  // Promote recoverable warnings (e.g. a BVH frame-count mismatch) to errors.
+  bool strict = false;
+};
+
+struct ExportOptions {
+  // BVH output unit: "auto" writes in the source's unit (recorded on import), else as ImportOptions::unit.
+  std::string unit = "auto";
+  // glTF: pretty-print the JSON of .gltf output.
+  bool pretty = true;
+};
+
+// Reads any supported file: .bvh, .gltf, .glb, and (through Assimp) .fbx and other
+// Assimp formats. Errors name the file and the line or field.
+Result<Scene> ImportFile(const std::string& path, const ImportOptions& options = {});
+
+// Writes .gltf, .glb or .bvh by the extension of `path`. The write is atomic: the file
+// appears complete or not at all, and an existing file is replaced only on success.
+Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options = {});
+
+// True when the extension is one ImportFile reads / ExportFile writes.
+bool IsImportExtension(const std::string& path);
+bool IsExportExtension(const std::string& path);
+
+}  // namespace mocapfill

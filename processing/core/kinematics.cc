@@ -1,0 +1,54 @@
+#include "processing/core/kinematics.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace mocapfill {
+
+void ComputeWorldPose(const Skeleton& skeleton, const MotionClip& clip, int frame, WorldPose& out) {
+  const int n = skeleton.num_joints();
+  out.positions.resize(n);
+  out.rotations.resize(n);
+  for (int j = 0; j < n; ++j) {
+    const Eigen::Quaterniond& r = clip.rotation(frame, j);
+    const Eigen::Vector3d& t = clip.translation(frame, j);
+    const int p = skeleton.parent(j);
+    if (p == kNoParent) {
+      out.positions[j] = t;
+      out.rotations[j] = r;
+    } else {
+      const Eigen::Vector3d scaled = skeleton.joint(p).rest_scale.cwiseProduct(t);
+      out.positions[j] = out.positions[p] + out.rotations[p] * scaled;
+      out.rotations[j] = out.rotations[p] * r;
+    }
+  }
+}
+
+std::vector<Eigen::Vector3d> ComputeWorldPositions(const Skeleton& skeleton, const MotionClip& clip) {
+  std::vector<Eigen::Vector3d> result(static_cast<size_t>(clip.num_frames) * clip.num_joints);
+  WorldPose pose;
+  for (int f = 0; f < clip.num_frames; ++f) {
+    ComputeWorldPose(skeleton, clip, f, pose);
+    std::copy(pose.positions.begin(), pose.positions.end(), result.begin() + static_cast<size_t>(f) * clip.num_joints);
+  }
+  return result;
+}
+
+double RestPoseExtent(const Skeleton& skeleton, int axis) {
+  MotionClip rest = MotionClip::RestPose(skeleton, 1, 30.0);
+  WorldPose pose;
+  ComputeWorldPose(skeleton, rest, 0, pose);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int j = 0; j < skeleton.num_joints(); ++j) {
+    lo = std::min(lo, pose.positions[j][axis]);
+    hi = std::max(hi, pose.positions[j][axis]);
+    if (const auto& end = skeleton.joint(j).end_site) {
+      const double v = (pose.positions[j] + pose.rotations[j] * *end)[axis];
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  return skeleton.num_joints() ? hi - lo : 0.0;
+}
+
+}  // namespace mocapfill

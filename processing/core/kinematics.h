@@ -1,0 +1,29 @@
+// Forward kinematics: local joint transforms to world (model) space.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "processing/core/motion_clip.h"
+#include "processing/core/skeleton.h"
+
+namespace mocapfill {
+
+struct WorldPose {
+  std::vector<Eigen::Vector3d> positions;       // per joint, metres
+  std::vector<Eigen::Quaterniond> rotations;    // per joint
+};
+
+// World transforms of every joint at one frame (parents before children, one loop).
+// Joint scale is applied to child offsets.
+void ComputeWorldPose(const Skeleton& skeleton, const MotionClip& clip, int frame, WorldPose& out);
+
+// World positions of every joint at every frame, frame-major [f * J + j].
+std::vector<Eigen::Vector3d> ComputeWorldPositions(const Skeleton& skeleton, const MotionClip& clip);
+
+// Extent of the rest pose (including BVH end sites) along axis `axis` (0 x, 1 y, 2 z),
+// in the skeleton's own units. Used to guess units of unit-less formats.
+double RestPoseExtent(const Skeleton& skeleton, int axis);
+
+}  // namespace mocapfill

@@ -1,0 +1,74 @@
+#include "processing/core/motion_clip.h"
+
+#include <cmath>
+
+#include "processing/core/rotation.h"
+
+namespace mocapfill {
+
+MotionClip MotionClip::RestPose(const Skeleton& skeleton, int frames, double rate_hz) {
+  MotionClip clip;
+  clip.sample_rate_hz = rate_hz;
+  clip.num_frames = frames;
+  clip.num_joints = skeleton.num_joints();
+  clip.rotations.resize(static_cast<size_t>(frames) * clip.num_joints);
+  clip.translations.resize(clip.rotations.size());
+  for (int f = 0; f < frames; ++f) {
+    for (int j = 0; j < clip.num_joints; ++j) {
+      clip.rotation(f, j) = skeleton.joint(j).rest_rotation;
+      clip.translation(f, j) = skeleton.joint(j).rest_translation;
+    }
+  }
+  clip.translation_animated.assign(clip.num_joints, 0);
+  clip.keys.assign(clip.num_joints, JointKeys{});
+  return clip;
+}
+
+void MotionClip::KeyAllFrames() {
+  keys.assign(num_joints, JointKeys{});
+  for (int j = 0; j < num_joints; ++j) {
+    keys[j].rotation_frames.resize(num_frames);
+    for (int f = 0; f < num_frames; ++f) keys[j].rotation_frames[f] = f;
+    if (translation_animated[j]) keys[j].translation_frames = keys[j].rotation_frames;
+  }
+}
+
+void MotionClip::MakeContinuous() {
+  for (int j = 0; j < num_joints; ++j)
+    MakeHemisphereContinuous(rotations, j, num_frames, num_joints);
+}
+
+void MotionClip::DetectAnimatedTranslations(double tolerance_m) {
+  translation_animated.assign(num_joints, 0);
+  for (int j = 0; j < num_joints; ++j)
+    for (int f = 1; f < num_frames && !translation_animated[j]; ++f)
+      if ((translation(f, j) - translation(0, j)).cwiseAbs().maxCoeff() > tolerance_m) translation_animated[j] = 1;
+}
+
+Status MotionClip::Validate(const Skeleton& skeleton) const {
+  if (num_joints != skeleton.num_joints())
+    return InvalidData("clip '" + name + "' has " + std::to_string(num_joints) + " joints, skeleton has " +
+                       std::to_string(skeleton.num_joints()));
+  if (num_frames <= 0) return InvalidData("clip '" + name + "' has no frames");
+  if (!(sample_rate_hz > 0.0) || !std::isfinite(sample_rate_hz))
+    return InvalidData("clip '" + name + "' has an invalid sample rate");
+  const size_t n = static_cast<size_t>(num_frames) * num_joints;
+  if (rotations.size() != n || translations.size() != n || translation_animated.size() != size_t(num_joints) ||
+      keys.size() != size_t(num_joints))
+    return Internal("clip '" + name + "' has inconsistent array sizes");
+  for (size_t i = 0; i < n; ++i) {
+    if (!rotations[i].coeffs().allFinite() || !translations[i].allFinite())
+      return InvalidData("clip '" + name + "' has a non-finite value at frame " + std::to_string(i / num_joints) +
+                         ", joint '" + skeleton.name(static_cast<int>(i % num_joints)) + "'");
+    if (std::abs(rotations[i].norm() - 1.0) > 1e-6)
+      return Internal("clip '" + name + "' has a non-unit rotation");
+  }
+  for (int j = 0; j < num_joints; ++j)
+    for (const auto* frames : {&keys[j].rotation_frames, &keys[j].translation_frames})
+      for (size_t k = 0; k < frames->size(); ++k)
+        if ((*frames)[k] < 0 || (*frames)[k] >= num_frames || (k > 0 && (*frames)[k] <= (*frames)[k - 1]))
+          return Internal("clip '" + name + "' has unsorted or out-of-range keys");
+  return OkStatus();
+}
+
+}  // namespace mocapfill

@@ -1,0 +1,42 @@
+#include "tests/support/test_paths.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace mocapfill::testing {
+
+std::string FixturePath(const std::string& relative) { return std::string(MOCAPFILL_FIXTURES_DIR) + "/" + relative; }
+
+std::string DataDir() {
+  std::error_code ec;
+  const fs::path dir(MOCAPFILL_DATA_DIR);
+  if (fs::is_directory(dir, ec)) return fs::canonical(dir, ec).string();
+  return "";
+}
+
+std::string DataPath(const std::string& relative) { return DataDir() + "/" + relative; }
+
+std::vector<std::string> CorpusFiles(const std::string& folder, const std::string& ext) {
+  std::vector<std::string> files;
+  const std::string root = DataDir();
+  if (root.empty()) return files;
+  std::error_code ec;
+  for (const auto& entry : fs::recursive_directory_iterator(root + "/" + folder, ec))
+    if (entry.is_regular_file() && entry.path().extension() == ext) files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string ScratchDir(const std::string& test_name) {
+  const fs::path dir = fs::path(MOCAPFILL_BINARY_DIR) / "test-scratch" / test_name;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  fs::create_directories(dir, ec);
+  return dir.string();
+}
+
+std::string MocapfillExe() { return std::string(MOCAPFILL_BINARY_DIR) + "/converter/mocapfill"; }
+
+}  // namespace mocapfill::testing
