@@ -37,6 +37,13 @@ std::string ScratchDir(const std::string& test_name) {
   return dir.string();
 }
 
+std::string TestOutputDir(const std::string& sub) {
+  const fs::path dir = fs::path(MOCAPFILL_BINARY_DIR) / "test-output" / sub;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  return dir.string();
+}
+
 std::string MocapfillExe() { return std::string(MOCAPFILL_BINARY_DIR) + "/converter/mocapfill"; }
 
 }  // namespace mocapfill::testing

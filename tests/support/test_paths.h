@@ -24,6 +24,10 @@ std::vector<std::string> CorpusFiles(const std::string& folder, const std::strin
 // A fresh, empty scratch directory for one test (under the build tree).
 std::string ScratchDir(const std::string& test_name);
 
+// <build>/test-output/<sub>, created if needed. Every glTF a test writes goes under
+// <build>/test-output so that CI validates all of them with the Khronos glTF-Validator.
+std::string TestOutputDir(const std::string& sub);
+
 // The path of the built mocapfill executable.
 std::string MocapfillExe();
 

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs everything mocapfill needs to build and test on Debian 12 (run as root).
+# Idempotent: skips apt when every package is already present.
+set -euo pipefail
+packages=(
+  cmake ninja-build g++ pkg-config
+  libeigen3-dev libtinygltf-dev libassimp-dev assimp-utils libceres-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  nodejs npm
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+# The Khronos glTF-Validator (npm package, pinned in tools/package.json) checks every glTF the tests write.
+here=$(cd "$(dirname "$0")" && pwd)
+if [ -f "$here/package.json" ] && [ ! -d "$here/node_modules/gltf-validator" ]; then
+  npm install --prefix "$here" --no-audit --no-fund --silent >/dev/null
+fi
