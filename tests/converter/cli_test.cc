@@ -1,0 +1,167 @@
+// CLI contract tests: run the built mocapfill executable and check exit codes, messages,
+// and that failures leave no output file and never touch an input.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+RunResult Run(const std::string& args) {
+  RunResult result;
+  const std::string command = testing::MocapfillExe() + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string Quote(const std::string& s) { return "'" + s + "'"; }
+
+std::vector<std::string> FixtureBvhFiles() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(testing::FixturePath("bvh")))
+    if (entry.path().extension() == ".bvh") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Cli, VersionAndHelpForEveryVerb) {
+  RunResult version = Run("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.output.find("mocapfill "), std::string::npos);
+  for (const char* verb : {"convert", "inspect"}) {
+    RunResult help = Run(std::string(verb) + " --help");
+    EXPECT_EQ(help.exit_code, 0) << verb;
+    EXPECT_NE(help.output.find("Examples:"), std::string::npos) << verb << ": " << help.output;
+  }
+  EXPECT_NE(Run("--help").output.find("Exit codes"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitWithOne) {
+  EXPECT_EQ(Run("").exit_code, 1);
+  EXPECT_EQ(Run("frobnicate").exit_code, 1);
+  EXPECT_EQ(Run("convert").exit_code, 1);
+  EXPECT_EQ(Run("convert --unit parsec a.bvh b.glb").exit_code, 1);
+  const std::string dir = testing::ScratchDir("cli_usage");
+  EXPECT_EQ(Run("convert " + Quote(FixtureBvhFiles().at(0)) + " " + Quote(dir + "/out.obj")).exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir + "/out.obj"));
+}
+
+TEST(Cli, MissingInputExitsWithTwoAndWritesNothing) {
+  const std::string dir = testing::ScratchDir("cli_missing");
+  RunResult r = Run("convert " + Quote(dir + "/nope.bvh") + " " + Quote(dir + "/out.glb"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("nope.bvh"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out.glb"));
+}
+
+TEST(Cli, BadInputsExitWithTwoNameTheFileAndLeaveNoOutput) {
+  const std::string dir = testing::ScratchDir("cli_bad");
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(testing::FixturePath("bad"))) {
+    const std::string in = entry.path().string();
+    const std::string out = dir + "/" + entry.path().stem().string() + ".glb";
+    RunResult r = Run("convert " + Quote(in) + " " + Quote(out));
+    EXPECT_EQ(r.exit_code, 2) << in << ": " << r.output;
+    EXPECT_NE(r.output.find(entry.path().filename().string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << out;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+  for (const auto& entry : fs::directory_iterator(dir)) ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+TEST(Cli, TruncatedBvhMessageNamesTheLine) {
+  RunResult r = Run("inspect " + Quote(testing::FixturePath("bad/truncated.bvh")));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("truncated.bvh:"), std::string::npos) << r.output;
+}
+
+TEST(Cli, FailedConversionKeepsAnExistingOutputUntouched) {
+  const std::string dir = testing::ScratchDir("cli_keep");
+  const std::string out = dir + "/out.glb";
+  { std::ofstream(out) << "previous content"; }
+  RunResult r = Run("convert " + Quote(testing::FixturePath("bad/truncated.bvh")) + " " + Quote(out));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(ReadAll(out), "previous content");
+}
+
+TEST(Cli, RefusesToOverwriteAnInput) {
+  const std::string dir = testing::ScratchDir("cli_overwrite");
+  const std::string in = dir + "/clip.bvh";
+  fs::copy_file(FixtureBvhFiles().at(0), in);
+  const std::string before = ReadAll(in);
+  RunResult r = Run("convert " + Quote(in) + " " + Quote(in));
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("refusing to overwrite"), std::string::npos) << r.output;
+  EXPECT_EQ(ReadAll(in), before);
+  // The same file reached through another path is caught too.
+  RunResult r2 = Run("convert " + Quote(in) + " -o " + Quote(dir) + " --format bvh");
+  EXPECT_EQ(r2.exit_code, 4) << r2.output;
+  EXPECT_EQ(ReadAll(in), before);
+}
+
+TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
+  const std::string dir = testing::TestOutputDir("cli_batch");
+  std::string args = "convert";
+  const auto inputs = FixtureBvhFiles();
+  for (const std::string& in : inputs) args += " " + Quote(in);
+  RunResult r = Run(args + " -o " + Quote(dir) + " -j 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string& in : inputs) {
+    const std::string out = dir + "/" + fs::path(in).stem().string() + ".glb";
+    ASSERT_TRUE(fs::exists(out)) << out;
+    EXPECT_EQ(ReadAll(out).substr(0, 4), "glTF");
+  }
+}
+
+TEST(Cli, ConvertIsDeterministic) {
+  const std::string dir = testing::ScratchDir("cli_determinism");
+  const std::string in = FixtureBvhFiles().at(0);
+  ASSERT_EQ(Run("convert " + Quote(in) + " " + Quote(dir + "/a.glb")).exit_code, 0);
+  ASSERT_EQ(Run("convert " + Quote(in) + " " + Quote(dir + "/b.glb")).exit_code, 0);
+  EXPECT_EQ(ReadAll(dir + "/a.glb"), ReadAll(dir + "/b.glb"));
+}
+
+TEST(Cli, InspectJsonDescribesTheClip) {
+  for (const std::string& in : FixtureBvhFiles()) {
+    RunResult r = Run("inspect --json " + Quote(in));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto json = nlohmann::json::parse(r.output);
+    EXPECT_EQ(json["format"], "bvh");
+    EXPECT_GT(json["skeleton"]["joints"].get<int>(), 1);
+    ASSERT_EQ(json["clips"].size(), 1u);
+    EXPECT_GT(json["clips"][0]["frames"].get<int>(), 1);
+    EXPECT_GT(json["clips"][0]["rate_hz"].get<double>(), 0.0);
+    EXPECT_NEAR(json["clips"][0]["duration_s"].get<double>(),
+                (json["clips"][0]["frames"].get<int>() - 1) / json["clips"][0]["rate_hz"].get<double>(), 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace mocapfill
