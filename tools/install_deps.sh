@@ -6,7 +6,7 @@ packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libtinygltf-dev libassimp-dev assimp-utils libceres-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-  nodejs npm
+  nodejs npm bc
 )
 missing=()
 for p in "${packages[@]}"; do
