@@ -53,6 +53,7 @@ void ScaleScene(Scene& scene, double scale) {
     Joint& joint = scene.skeleton.mutable_joint(j);
     joint.rest_translation *= scale;
     if (joint.end_site) *joint.end_site *= scale;
+    if (joint.bvh_offset) *joint.bvh_offset *= scale;
   }
   for (MotionClip& clip : scene.clips)
     for (Eigen::Vector3d& t : clip.translations) t *= scale;
@@ -70,6 +71,7 @@ void ConvertZUpToYUp(Scene& scene) {
   for (int j : scene.skeleton.Roots()) {
     Joint& joint = scene.skeleton.mutable_joint(j);
     joint.rest_translation = cm * joint.rest_translation;
+    if (joint.bvh_offset) *joint.bvh_offset = cm * *joint.bvh_offset;
     joint.rest_rotation = (c * joint.rest_rotation).normalized();
     for (MotionClip& clip : scene.clips) {
       for (int f = 0; f < clip.num_frames; ++f) {

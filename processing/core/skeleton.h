@@ -28,6 +28,11 @@ struct Joint {
   std::vector<std::string> bvh_channels;
   // Offset of a BVH "End Site" child (m), kept as data rather than as a joint.
   std::optional<Eigen::Vector3d> end_site;
+  // The BVH OFFSET as written (m), kept only when it differs from rest_translation: a joint
+  // whose position channels hold one constant value over the clip takes that value as its
+  // rest translation (so the rest pose matches the animation), and BVH export writes this
+  // OFFSET back so the file round-trips. Scaled and rotated with rest_translation.
+  std::optional<Eigen::Vector3d> bvh_offset;
 };
 
 class Skeleton {
