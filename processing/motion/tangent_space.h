@@ -1,0 +1,112 @@
+// Signal space of every analysis and synthesis stage (algorithms.md 1.2-1.3).
+//
+// Joint rotations become "tangent coordinates" v = Log(Rbar^-1 R) about a per-joint
+// reference rotation Rbar (the mean over a clip or a database), free of Euler wrap-around.
+// The motion root (the joint that carries world motion, e.g. Bandai-Namco "Hips") is split
+// into a heading yaw about the up axis (+Y) and the remaining tilt: its tangent columns hold
+// the tilt about the mean tilt, and its world motion becomes heading-invariant root
+// features (height, planar velocity in the heading frame, yaw rate). Heading and planar
+// position are re-integrated from the features, so Decompose -> Compose is exact up to
+// floating-point rounding and a clip can be edited in signal space without wrapping.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <span>
+#include <vector>
+
+#include "processing/core/motion_clip.h"
+#include "processing/core/skeleton.h"
+#include "processing/core/status.h"
+
+namespace mocapfill {
+
+// Column of joint j's tangent component `axis` (0 x, 1 y, 2 z) in a T x 3J tangent matrix.
+inline int TangentColumn(int joint, int axis) { return 3 * joint + axis; }
+
+// Reference rotations of a tangent space. joint_means[j] is the mean local rotation of
+// joint j, except for root_joint, whose entry is the mean world tilt (heading removed).
+struct TangentReference {
+  std::vector<Eigen::Quaterniond> joint_means;
+  int root_joint = -1;  // motion root; -1 = no root split (every joint is a plain local tangent)
+};
+
+// The joint that carries the character's world motion: the first joint (index order) whose
+// translation is animated in any of `clips`; when none is, the first root of the skeleton.
+int FindMotionRoot(const Skeleton& skeleton, std::span<const MotionClip* const> clips);
+
+// Mean of unit quaternions (algorithms.md 1.2): sign-align every quaternion to a seed (the
+// first one), average the components, normalise; repeat once with the result as seed.
+// Returns identity for an empty input or when the average vanishes.
+Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations);
+
+// Splits a world rotation into R = Ry(heading) * tilt, where tilt has no twist about +Y
+// (its quaternion has a zero y component; swing-twist decomposition about the up axis).
+// heading_rad is in (-pi, pi]; it is 0 in the degenerate case of a 180-degree swing.
+void SplitHeading(const Eigen::Quaterniond& world, double& heading_rad, Eigen::Quaterniond& tilt);
+
+// Rotation about +Y by `angle_rad`.
+Eigen::Quaterniond YawRotation(double angle_rad);
+
+// Reference rotations of the clips (each joint's MeanRotation over every frame of every
+// clip; the root's entry from its world tilts). All clips must be valid for `skeleton`.
+// root_joint = -1 disables the heading split.
+TangentReference ComputeTangentReference(const Skeleton& skeleton, std::span<const MotionClip* const> clips,
+                                         int root_joint);
+
+// World motion of the motion root, one entry per frame.
+struct RootTrajectory {
+  std::vector<double> heading_rad;          // yaw about +Y, unwrapped (consecutive |diff| < pi)
+  std::vector<Eigen::Vector3d> position_m;  // world position of the root joint
+  std::vector<Eigen::Quaterniond> tilt;     // world rotation with the heading removed
+};
+
+// World trajectory of `root_joint` (its local transform composed with its ancestors').
+RootTrajectory ExtractRootTrajectory(const Skeleton& skeleton, const MotionClip& clip, int root_joint);
+
+// Columns of the heading-invariant root feature matrix (T x kNumRootFeatures).
+// Velocities are forward differences: row t describes the step from frame t to t + 1,
+// expressed in the heading frame of frame t (forward = heading frame +Z, lateral = +X);
+// the last row repeats the previous one so every frame has a row.
+enum RootFeature : int {
+  kRootHeight = 0,        // world height (Y) of the root, m
+  kRootForward = 1,       // planar velocity along the heading frame's +Z, m/s
+  kRootLateral = 2,       // planar velocity along the heading frame's +X, m/s
+  kRootYawRate = 3,       // heading change per second, rad/s
+  kNumRootFeatures = 4,
+};
+
+// Stable channel name of a root feature: "root.height_m", "root.forward_mps",
+// "root.lateral_mps", "root.yaw_rate_radps".
+const char* RootFeatureName(int feature);
+
+// Root features of a trajectory sampled at rate_hz. A one-frame trajectory has zero velocities.
+Eigen::MatrixXd RootFeaturesFromTrajectory(const RootTrajectory& trajectory, double rate_hz);
+
+// Inverse of RootFeaturesFromTrajectory for heading and position: starts at
+// (start_heading_rad, start_position_m) and integrates rows 0..T-2; height is taken from
+// the feature column directly. The tilt member is left empty.
+RootTrajectory IntegrateRootFeatures(const Eigen::MatrixXd& features, double rate_hz, double start_heading_rad,
+                                     const Eigen::Vector3d& start_position_m);
+
+// A clip expressed in signal space.
+struct ClipSignals {
+  Eigen::MatrixXd tangent;        // T x 3J; the root joint's columns hold Log(mean_tilt^-1 * tilt)
+  Eigen::MatrixXd root_features;  // T x kNumRootFeatures; 0 columns when reference.root_joint < 0
+  double start_heading_rad = 0.0;                            // heading at frame 0
+  Eigen::Vector3d start_position_m = Eigen::Vector3d::Zero();  // root world position at frame 0
+};
+
+// Clip -> signal space about `reference` (which must have one mean per joint).
+ClipSignals DecomposeClip(const Skeleton& skeleton, const MotionClip& clip, const TangentReference& reference);
+
+// Signal space -> clip: R_j = Rbar_j * Exp(v_j); the root's world rotation is
+// Ry(heading) * mean_tilt * Exp(v_root) with heading and position integrated from the root
+// features, then converted back to a local transform through the root's ancestors as
+// animated in `like`. Everything the signals do not describe (name, rate, translations of
+// other joints, keys) is copied from `like`, which must have as many frames as the signals.
+// Errors: size mismatches (kInvalidArgument), non-finite signals (kNumericalFailure).
+Result<MotionClip> ComposeClip(const Skeleton& skeleton, const ClipSignals& signals,
+                               const TangentReference& reference, const MotionClip& like);
+
+}  // namespace mocapfill
