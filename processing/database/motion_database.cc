@@ -1,0 +1,138 @@
+#include "processing/database/motion_database.h"
+
+#include <cmath>
+#include <string>
+
+namespace mocapfill {
+
+namespace {
+
+Status CheckMatrix(const Eigen::MatrixXf& m, Eigen::Index rows, Eigen::Index cols, const std::string& what) {
+  if (m.rows() != rows || m.cols() != cols)
+    return InvalidData(what + " is " + std::to_string(m.rows()) + " x " + std::to_string(m.cols()) + ", expected " +
+                       std::to_string(rows) + " x " + std::to_string(cols));
+  if (!m.allFinite()) return InvalidData(what + " contains a non-finite value");
+  return OkStatus();
+}
+
+}  // namespace
+
+Status DatabaseOptions::Validate() const {
+  if (!std::isfinite(rate_hz) || rate_hz <= 0.0) return InvalidArgument("database: rate_hz must be finite and > 0");
+  for (double hz : stored_band_hz)
+    if (!std::isfinite(hz) || hz <= 0.0 || hz > 0.5 * rate_hz)
+      return InvalidArgument("database: stored_band_hz values must be in (0, rate_hz / 2]");
+  if (!std::isfinite(correlation_band_hz) || correlation_band_hz <= 0.0 || correlation_band_hz > 0.5 * rate_hz)
+    return InvalidArgument("database: correlation_band_hz must be in (0, rate_hz / 2]");
+  if (!std::isfinite(correlation_max_lag_s) || correlation_max_lag_s < 0.0 || correlation_max_lag_s > 10.0)
+    return InvalidArgument("database: correlation_max_lag_s must be in [0, 10] s");
+  if (threads < 0) return InvalidArgument("database: threads must be >= 0");
+  return OkStatus();
+}
+
+Result<MotionDatabase> MotionDatabase::FromParts(Parts parts) {
+  if (!std::isfinite(parts.rate_hz) || parts.rate_hz <= 0.0) return InvalidData("database rate is not positive");
+  const int joints = parts.skeleton.num_joints();
+  if (joints == 0) return InvalidData("database skeleton has no joints");
+  if (static_cast<int>(parts.reference.joint_means.size()) != joints)
+    return InvalidData("database has " + std::to_string(parts.reference.joint_means.size()) + " joint means for " +
+                       std::to_string(joints) + " joints");
+  for (const Eigen::Quaterniond& q : parts.reference.joint_means)
+    if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-6) return InvalidData("database joint mean is not a unit quaternion");
+  const int root = parts.reference.root_joint;
+  if (root < -1 || root >= joints) return InvalidData("database root joint index is out of range");
+  const int channels = 3 * joints + (root >= 0 ? kNumRootFeatures : 0);
+  long frames = 0;
+  for (size_t i = 0; i < parts.clips.size(); ++i) {
+    const ClipRange& c = parts.clips[i];
+    if (c.first_frame != frames || c.num_frames <= 0)
+      return InvalidData("clip " + std::to_string(i) + " ('" + c.name + "') does not follow the previous clip");
+    if (!std::isfinite(c.start_heading_rad) || !c.start_position_m.allFinite())
+      return InvalidData("clip '" + c.name + "' has a non-finite start pose");
+    frames += c.num_frames;
+  }
+  RETURN_IF_ERROR(CheckMatrix(parts.signals, frames, channels, "signal matrix"));
+  for (int j : parts.translated_joints)
+    if (j < 0 || j >= joints || j == root) return InvalidData("translated joint index " + std::to_string(j) + " is invalid");
+  RETURN_IF_ERROR(CheckMatrix(parts.translations, frames, 3 * static_cast<Eigen::Index>(parts.translated_joints.size()),
+                              "translation matrix"));
+  for (size_t b = 0; b < parts.bands.size(); ++b) {
+    if (parts.bands[b].band < 0 || (b > 0 && parts.bands[b].band <= parts.bands[b - 1].band))
+      return InvalidData("stored bands are not in ascending order");
+    RETURN_IF_ERROR(CheckMatrix(parts.bands[b].values, frames, channels, "band L" + std::to_string(parts.bands[b].band)));
+  }
+  const CorrelationTable& table = parts.correlation;
+  if (!table.empty() && (table.num_channels != channels ||
+                         table.entries.size() != static_cast<size_t>(channels) * static_cast<size_t>(channels)))
+    return InvalidData("correlation table does not match the channel count " + std::to_string(channels));
+  for (const CorrelationEntry& e : table.entries)
+    if (!(e.max_abs >= 0.0f && e.max_abs <= 1.0f) || !(std::abs(e.value) <= 1.0f) ||
+        std::abs(e.lag_frames) > table.max_lag_frames)
+      return InvalidData("correlation table holds an out-of-range entry");
+  return MotionDatabase(std::move(parts));
+}
+
+std::optional<int> MotionDatabase::FindClip(const std::string& name) const {
+  for (int i = 0; i < num_clips(); ++i)
+    if (parts_.clips[i].name == name) return i;
+  return std::nullopt;
+}
+
+std::vector<FrameSegment> MotionDatabase::Segments() const {
+  std::vector<FrameSegment> segments;
+  segments.reserve(parts_.clips.size());
+  for (const ClipRange& c : parts_.clips) segments.push_back({c.first_frame, c.num_frames});
+  return segments;
+}
+
+int MotionDatabase::RootFeatureChannel(int feature) const {
+  return root_joint() >= 0 ? 3 * num_joints() + feature : -1;
+}
+
+std::string MotionDatabase::ChannelName(int channel) const {
+  if (channel < 3 * num_joints()) return skeleton().name(channel / 3) + "." + "xyz"[channel % 3];
+  return RootFeatureName(channel - 3 * num_joints());
+}
+
+const StoredBand* MotionDatabase::FindBand(int k) const {
+  for (const StoredBand& b : parts_.bands)
+    if (b.band == k) return &b;
+  return nullptr;
+}
+
+ClipSignals MotionDatabase::ClipSignalsOf(int clip_index) const {
+  const ClipRange& c = parts_.clips[clip_index];
+  const Eigen::MatrixXd rows = ClipRows(parts_.signals, clip_index).cast<double>();
+  ClipSignals out;
+  out.tangent = rows.leftCols(3 * num_joints());
+  out.root_features = rows.rightCols(rows.cols() - 3 * num_joints());
+  out.start_heading_rad = c.start_heading_rad;
+  out.start_position_m = c.start_position_m;
+  return out;
+}
+
+Result<MotionClip> MotionDatabase::ReconstructClip(int clip_index) const {
+  if (clip_index < 0 || clip_index >= num_clips())
+    return InvalidArgument("database has no clip " + std::to_string(clip_index));
+  const ClipRange& c = parts_.clips[clip_index];
+  MotionClip like = MotionClip::RestPose(skeleton(), c.num_frames, rate_hz());
+  like.name = c.name;
+  for (size_t i = 0; i < parts_.translated_joints.size(); ++i) {
+    const int j = parts_.translated_joints[i];
+    like.translation_animated[j] = 1;
+    for (int f = 0; f < c.num_frames; ++f)
+      like.translation(f, j) = parts_.translations.block<1, 3>(c.first_frame + f, 3 * i).transpose().cast<double>();
+  }
+  if (root_joint() >= 0) like.translation_animated[root_joint()] = 1;
+  like.KeyAllFrames();
+  return ComposeClip(skeleton(), ClipSignalsOf(clip_index), reference(), like);
+}
+
+size_t MotionDatabase::MemoryBytes() const {
+  size_t bytes = sizeof(float) * (parts_.signals.size() + parts_.translations.size());
+  for (const StoredBand& b : parts_.bands) bytes += sizeof(float) * b.values.size();
+  bytes += sizeof(CorrelationEntry) * parts_.correlation.entries.size();
+  return bytes;
+}
+
+}  // namespace mocapfill
