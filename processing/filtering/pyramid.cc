@@ -66,8 +66,13 @@ Status PyramidOptions::Validate() const {
   return OkStatus();
 }
 
-double BandPeakHz(int band, double rate_hz) {
-  // Log-spaced grid over (0, Nyquist], then golden-section refinement around the best cell.
+namespace {
+
+// Peak of band k at a rate of 1 Hz: a log-spaced grid over (0, Nyquist], then golden-section
+// refinement around the best cell. The response depends on f / rate only, so peaks scale
+// linearly with the rate.
+double NormalisedBandPeak(int band) {
+  constexpr double rate_hz = 1.0;
   const double nyquist = 0.5 * rate_hz;
   const double lowest = nyquist * std::ldexp(1.0, -(band + 10));
   constexpr int kGrid = 2048;
@@ -87,6 +92,18 @@ double BandPeakHz(int band, double rate_hz) {
     if (at(c) > at(d)) b = d; else a = c;
   }
   return std::min(std::exp(0.5 * (a + b)), nyquist);
+}
+
+}  // namespace
+
+double BandPeakHz(int band, double rate_hz) {
+  static const std::vector<double> peaks = [] {
+    std::vector<double> p;
+    for (int k = 0; k <= 2 * kMaxLevels; ++k) p.push_back(NormalisedBandPeak(k));
+    return p;
+  }();
+  if (band >= 0 && band < static_cast<int>(peaks.size())) return peaks[band] * rate_hz;
+  return NormalisedBandPeak(band) * rate_hz;
 }
 
 int AutomaticLevels(int num_frames, double rate_hz, double min_band_peak_hz) {

@@ -10,8 +10,8 @@ namespace mocapfill {
 
 namespace {
 
-// Uniform Catmull-Rom between p1 and p2 at parameter u in [0, 1], with end points repeated
-// at the clip ends so the curve passes through every sample.
+// Uniform Catmull-Rom between p1 and p2 at parameter u in [0, 1]. Missing neighbours at the
+// clip ends are extrapolated linearly, so the end tangent is the secant and not half of it.
 Eigen::Vector3d CatmullRom(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                            const Eigen::Vector3d& p3, double u) {
   const double u2 = u * u, u3 = u2 * u;
@@ -72,8 +72,11 @@ Result<MotionClip> ResampleClip(const MotionClip& clip, const ResampleOptions& o
       } else if (options.translation == TranslationInterpolation::kLinear) {
         out.translation(f, j) = (1.0 - u) * clip.translation(i, j) + u * clip.translation(i1, j);
       } else {
-        out.translation(f, j) = CatmullRom(clip.translation(std::max(i - 1, 0), j), clip.translation(i, j),
-                                           clip.translation(i1, j), clip.translation(std::min(i1 + 1, last), j), u);
+        const Eigen::Vector3d& p1 = clip.translation(i, j);
+        const Eigen::Vector3d& p2 = clip.translation(i1, j);
+        const Eigen::Vector3d p0 = i > 0 ? clip.translation(i - 1, j) : Eigen::Vector3d(2.0 * p1 - p2);
+        const Eigen::Vector3d p3 = i1 < last ? clip.translation(i1 + 1, j) : Eigen::Vector3d(2.0 * p2 - p1);
+        out.translation(f, j) = CatmullRom(p0, p1, p2, p3, u);
       }
     }
   }
