@@ -1,0 +1,49 @@
+// Scores of a filled clip against the ground truth it was sketched from (algorithms.md 8.4
+// and 9.4). Positions are in centimetres relative to the motion root (the hips), so the
+// numbers measure the pose, not the trajectory the sketch already fixed.
+#pragma once
+
+#include <vector>
+
+#include "processing/core/motion_clip.h"
+#include "processing/core/skeleton.h"
+#include "processing/core/status.h"
+
+namespace mocapfill {
+
+struct FillMetrics {
+  // Mean per-joint position error (cm) relative to the hips, over every frame, for joints
+  // the sketch did not key (below the hips).
+  double mpjpe_unkeyed_cm = 0.0;
+  // The same for keyed joints on frames between their keys.
+  double mpjpe_keyed_between_cm = 0.0;
+  // Mean geodesic angle (deg) between filled and true local rotations of unkeyed joints.
+  double angle_unkeyed_deg = 0.0;
+  // NPSS (Gopalakrishnan et al. 2019) on the global quaternions of the joints below the hips.
+  double npss = 0.0;
+  // Mean jerk of filled joint positions over the ground truth's (joints below the hips).
+  double jitter_ratio = 0.0;
+  // Horizontal foot speed (cm/s) on the truth's contact frames, and the share above 2 cm/s.
+  double foot_skate_cm_per_s = 0.0;
+  double foot_skate_share = 0.0;
+  // Geodesic angle (deg) between output and sketch at keyed (joint, frame) pairs.
+  double key_error_mean_deg = 0.0;
+  double key_error_max_deg = 0.0;
+  // Relative bone-length change, mean over bones and frames (0 for rotation-only output).
+  double bone_length_error = 0.0;
+  int unkeyed_joints = 0;  // how many joints the unkeyed numbers cover
+};
+
+// Scores `filled` against `truth` (same skeleton, same frame count). `sketch` supplies the
+// keys (MotionClip::keys) that decide keyed/unkeyed joints and key frames. root_joint is the
+// hips (positions are taken relative to it; joints outside its subtree are ignored).
+// Errors: mismatched sizes (kInvalidArgument).
+Result<FillMetrics> ScoreFill(const Skeleton& skeleton, const MotionClip& truth, const MotionClip& sketch,
+                              const MotionClip& filled, int root_joint);
+
+// NPSS of two T x D signals (rows = frames): per dimension, the power spectrum over time
+// (squared real part of the DFT, as the reference code does) normalised to sum 1, cumulative
+// sums compared by L1 distance, averaged over dimensions weighted by the truth's power.
+double Npss(const std::vector<std::vector<double>>& truth, const std::vector<std::vector<double>>& predicted);
+
+}  // namespace mocapfill

@@ -1,0 +1,142 @@
+#include "processing/synthesis/assembly.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "processing/filtering/pyramid.h"
+
+namespace mocapfill {
+
+namespace {
+
+// The candidates blended into one fragment: the nearest `blend`, with the lead replacing the
+// farthest when it is not among them.
+std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int blend) {
+  std::vector<int> set;
+  for (int c = 0; c < std::min<int>(blend, static_cast<int>(cands.size())); ++c) set.push_back(c);
+  if (std::find(set.begin(), set.end(), lead) == set.end()) {
+    if (set.empty()) set.push_back(lead); else set.back() = lead;
+  }
+  return set;
+}
+
+// Adds weight * (candidate's channels stretched onto sketch frames [from, to)) to out.
+void AddStretched(const MotionDatabase& db, const DbFragment& g, const SketchFragment& f, int from, int to,
+                  const std::vector<int>& channels, double weight, Eigen::MatrixXd& out) {
+  const ClipRange& clip = db.clip(g.clip);
+  const Eigen::MatrixXf& s = db.signals();
+  const int span = std::max(1, f.last - f.first);
+  for (int t = from; t < to; ++t) {
+    const double u = g.first + double(t - f.first) * (g.last - g.first) / span;
+    const double uc = std::clamp(u, 0.0, double(clip.num_frames - 1));
+    const int a = static_cast<int>(uc), b = std::min(a + 1, clip.num_frames - 1);
+    const double w = uc - a;
+    for (int c : channels)
+      out(t, c) += weight * ((1.0 - w) * s(clip.first_frame + a, c) + w * s(clip.first_frame + b, c));
+  }
+}
+
+}  // namespace
+
+std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& out) {
+  const auto& frags = *in.fragments;
+  std::vector<int> blended(frags.size(), 0);
+  for (size_t i = 0; i < frags.size(); ++i) {
+    const std::vector<Candidate>& cands = (*in.candidates)[i];
+    if (cands.empty()) continue;
+    const int from = frags[i].first, to = i + 1 == frags.size() ? frags[i].last + 1 : frags[i].last;
+    for (int t = from; t < to; ++t)
+      for (int c : in.channels) out(t, c) = 0.0;
+    const std::vector<int> set = BlendSet(cands, in.leads[i], in.blend);
+    double mean_d = 0.0;
+    for (int c : set) mean_d += cands[c].distance;
+    mean_d = std::max(1e-9, mean_d / set.size());
+    std::vector<double> weights;
+    double total = 0.0;
+    for (int c : set) total += weights.emplace_back(std::exp(-cands[c].distance / mean_d));
+    for (size_t k = 0; k < set.size(); ++k)
+      AddStretched(*in.db, in.mdb->fragments()[cands[set[k]].fragment], frags[i], from, to, in.channels,
+                   weights[k] / total, out);
+    blended[i] = static_cast<int>(set.size());
+  }
+  return blended;
+}
+
+void SmoothSeams(Eigen::MatrixXd& out, const std::vector<int>& channels, const std::vector<SketchFragment>& fragments,
+                 int window_frames) {
+  const int rows = static_cast<int>(out.rows());
+  for (size_t i = 1; i < fragments.size(); ++i) {
+    const int b = fragments[i].first;
+    if (b < 2 || b + 1 >= rows) continue;
+    const int left_len = fragments[i - 1].last - fragments[i - 1].first;
+    const int right_len = fragments[i].last - fragments[i].first;
+    const int s = std::min({window_frames, std::max(1, left_len / 2), std::max(1, right_len / 2)});
+    if (s < 1) continue;
+    for (int c : channels) {
+      const double expected = ((out(b - 1, c) - out(b - 2, c)) + (out(b + 1, c) - out(b, c))) / 2.0;
+      const double jump = (out(b, c) - out(b - 1, c)) - expected;
+      for (int d = 0; d < s; ++d) {
+        const double fall = (1.0 - double(d) / s) * (1.0 - double(d) / s);
+        if (b - 1 - d >= 0) out(b - 1 - d, c) += 0.5 * jump * fall;
+        if (b + d < rows) out(b + d, c) -= 0.5 * jump * fall;
+      }
+    }
+  }
+}
+
+int TextureBandCount(int key_spacing, double rate_hz) {
+  const double nyquist = rate_hz / (2.0 * std::max(1, key_spacing));
+  int count = 0;
+  while (count < 16 && BandPeakHz(count, rate_hz) > nyquist) ++count;
+  return count;
+}
+
+void TextureChannels(const Eigen::MatrixXd& sketch, const Eigen::MatrixXd& source, const std::vector<int>& channels,
+                     int texture_bands, double rate_hz, Eigen::MatrixXd& out) {
+  if (texture_bands < 1 || channels.empty() || sketch.rows() < 2) return;
+  Eigen::MatrixXd a(sketch.rows(), channels.size()), b(source.rows(), channels.size());
+  for (size_t i = 0; i < channels.size(); ++i) {
+    a.col(i) = sketch.col(channels[i]);
+    b.col(i) = source.col(channels[i]);
+  }
+  PyramidOptions options;
+  options.levels = texture_bands;
+  Result<Pyramid> pa = BuildPyramid(a, rate_hz, options);
+  Result<Pyramid> pb = BuildPyramid(b, rate_hz, options);
+  if (!pa.ok() || !pb.ok()) return;
+  const Eigen::MatrixXd textured = pa->residual + (b - pb->residual);  // G_kt(sketch) + high bands(source)
+  for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = textured.col(i);
+}
+
+void RepinKeys(const SketchSignals& sketch, const std::vector<int>& channels, Eigen::MatrixXd& out) {
+  const int rows = static_cast<int>(out.rows());
+  for (int c : channels) {
+    const std::vector<int>& keys = sketch.key_frames[c];
+    if (keys.empty()) continue;
+    std::vector<double> d(keys.size());
+    for (size_t k = 0; k < keys.size(); ++k) d[k] = out(keys[k], c) - sketch.values(keys[k], c);
+    // Catmull-Rom slopes through (key, offset) pairs, one-sided at the ends.
+    std::vector<double> m(keys.size(), 0.0);
+    for (size_t k = 0; k < keys.size(); ++k) {
+      const size_t lo = k == 0 ? 0 : k - 1, hi = std::min(keys.size() - 1, k + 1);
+      if (hi > lo) m[k] = (d[hi] - d[lo]) / (keys[hi] - keys[lo]);
+    }
+    for (int f = 0; f < rows; ++f) {
+      double offset;
+      if (f <= keys.front()) {
+        offset = d.front();
+      } else if (f >= keys.back()) {
+        offset = d.back();
+      } else {
+        const size_t k = std::upper_bound(keys.begin(), keys.end(), f) - keys.begin() - 1;
+        const double h = keys[k + 1] - keys[k], u = (f - keys[k]) / h;
+        const double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u;
+        const double h01 = -2 * u * u * u + 3 * u * u, h11 = u * u * u - u * u;
+        offset = h00 * d[k] + h10 * h * m[k] + h01 * d[k + 1] + h11 * h * m[k + 1];
+      }
+      out(f, c) -= offset;
+    }
+  }
+}
+
+}  // namespace mocapfill

@@ -1,0 +1,265 @@
+#include "processing/synthesis/fill.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "processing/core/rotation.h"
+#include "processing/filtering/pyramid.h"
+#include "processing/synthesis/assembly.h"
+#include "processing/synthesis/baselines.h"
+#include "processing/synthesis/fragment_matching.h"
+#include "processing/synthesis/hierarchy.h"
+#include "processing/synthesis/joining.h"
+#include "processing/synthesis/matching_database.h"
+#include "processing/synthesis/sketch_signals.h"
+
+namespace mocapfill {
+
+namespace {
+
+class StageTimer {
+ public:
+  explicit StageTimer(FillReport& report) : report_(report), start_(std::chrono::steady_clock::now()) {}
+  // Records the time since the previous mark under `stage` (summed when repeated).
+  void Mark(const std::string& stage) {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    for (StageTime& t : report_.stages)
+      if (t.stage == stage) {
+        t.seconds += s;
+        return;
+      }
+    report_.stages.push_back({stage, s});
+  }
+
+ private:
+  FillReport& report_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// Per joint: 1 when the fill must not change it (keyed, or an ancestor of the motion root,
+// whose transform ComposeClip takes from the sketch).
+std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSignals& s) {
+  std::vector<std::uint8_t> fixed(db.num_joints(), 0);
+  for (int j = 0; j < db.num_joints(); ++j) fixed[j] = s.keyed[3 * j];
+  for (int p = db.root_joint() >= 0 ? db.skeleton().parent(db.root_joint()) : kNoParent; p != kNoParent;
+       p = db.skeleton().parent(p))
+    fixed[p] = 1;
+  return fixed;
+}
+
+bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s) {
+  return db.root_joint() >= 0 && s.num_channels() > 3 * db.num_joints() && s.keyed[3 * db.num_joints()];
+}
+
+std::vector<int> RootFeatureChannels(const MotionDatabase& db) {
+  std::vector<int> channels;
+  if (db.root_joint() >= 0)
+    for (int f = 0; f < kNumRootFeatures; ++f) channels.push_back(db.RootFeatureChannel(f));
+  return channels;
+}
+
+// Everything one fragment-based fill needs, shared by the groups.
+struct FragmentContext {
+  const MotionDatabase* db;
+  const MatchingDatabase* mdb;
+  const SketchSignals* sketch;
+  const FillOptions* options;
+  std::vector<SketchFragment> fragments;
+  Eigen::VectorXf sigma;
+};
+
+// Matches, joins and assembles one target set; returns the joined leads and candidates.
+struct GroupResult {
+  std::vector<std::vector<Candidate>> candidates;
+  std::vector<int> leads;
+};
+
+GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<DrivenChannel>& driven,
+                            const std::vector<int>& targets, int blend, Eigen::MatrixXd& out, StageTimer& timer) {
+  const Eigen::MatrixXd match = MatchingSignal(out, ctx.db->rate_hz(), *ctx.options);
+  GroupResult r;
+  r.candidates = MatchFragments(*ctx.mdb, match, ctx.fragments, driven, *ctx.options);
+  timer.Mark("match");
+  JoinInputs join{ctx.db, ctx.mdb, &r.candidates, targets, ctx.sigma, ctx.options->transition_gamma};
+  r.leads = JoinCandidates(ctx.options->join, join);
+  timer.Mark("join");
+  AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, targets};
+  AssembleFragments(assembly, out);
+  const int window = static_cast<int>(std::lround(ctx.options->seam_window_s * ctx.db->rate_hz()));
+  SmoothSeams(out, targets, ctx.fragments, window);
+  timer.Mark("assemble");
+  return r;
+}
+
+void ReportGroup(const FragmentContext& ctx, const std::string& name, const GroupResult& r, int blend,
+                 FillReport& report) {
+  for (size_t i = 0; i < ctx.fragments.size(); ++i) {
+    if (r.candidates[i].empty()) continue;
+    const Candidate& c = r.candidates[i][r.leads[i]];
+    const DbFragment& g = ctx.mdb->fragments()[c.fragment];
+    report.fragments.push_back({name, ctx.fragments[i].first, ctx.fragments[i].last, ctx.db->clip(g.clip).name,
+                                g.first, g.last, c.distance, std::min<int>(blend, r.candidates[i].size())});
+    if (i > 0 && !r.candidates[i - 1].empty() &&
+        !Continues(ctx.mdb->fragments()[r.candidates[i - 1][r.leads[i - 1]].fragment], g))
+      ++report.seams;
+  }
+}
+
+std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const SketchSignals& s, const FillOptions& o) {
+  std::vector<DrivenChannel> driven;
+  for (int c = 0; c < s.num_channels(); ++c)
+    if (s.keyed[c]) driven.push_back({c, c >= 3 * db.num_joints() ? o.root_feature_weight : 1.0});
+  return driven;
+}
+
+Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache, const SketchSignals& s,
+                         const FillOptions& options, Eigen::MatrixXd& out, FillReport& report, StageTimer& timer) {
+  const double rate = db.rate_hz();
+  const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
+  const int master = ChooseMasterChannel(s, band, rate);
+  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db)};
+  ASSIGN_OR_RETURN(ctx.fragments, FragmentSketch(s, master, band, rate));
+  report.master_channel = db.ChannelName(master);
+  report.fragment_band = band;
+  report.sketch_fragments = static_cast<int>(ctx.fragments.size());
+  timer.Mark("fragment");
+  if (!cache || !cache->Serves(s, master, band, options)) {
+    ASSIGN_OR_RETURN(MatchingDatabase built, MatchingDatabase::Build(db, s, master, band, options));
+    cache = std::make_unique<MatchingDatabase>(std::move(built));
+  }
+  ctx.mdb = cache.get();
+  timer.Mark("filter_db");
+
+  const std::vector<std::uint8_t> fixed = FixedJoints(db, s);
+  std::vector<int> root_targets;
+  if (!RootFeaturesKeyed(db, s)) root_targets = RootFeatureChannels(db);
+  if (options.method == FillMethod::kFragment) {
+    std::vector<int> joints;
+    for (int j = 0; j < db.num_joints(); ++j)
+      if (!fixed[j]) joints.push_back(j);
+    std::vector<int> targets = JointChannels(joints);
+    targets.insert(targets.end(), root_targets.begin(), root_targets.end());
+    if (!targets.empty()) {
+      const GroupResult r = SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), targets, options.blend, out, timer);
+      ReportGroup(ctx, "missing joints", r, options.blend, report);
+    }
+  } else {
+    std::vector<std::uint8_t> available = fixed, keyed(db.num_joints(), 0);
+    for (int j = 0; j < db.num_joints(); ++j) keyed[j] = s.keyed[3 * j];
+    bool first = true;
+    for (const JointGroup& group : PlanGroups(db.skeleton(), fixed)) {
+      std::vector<DrivenChannel> driven =
+          ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
+                        options.synthesized_driver_weight, options.root_feature_weight);
+      if (driven.empty()) driven = AllKeyedDrivers(db, s, options);
+      std::vector<int> targets = JointChannels(group.joints);
+      if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
+      first = false;
+      const GroupResult r = SynthesiseGroup(ctx, driven, targets, options.blend, out, timer);
+      ReportGroup(ctx, group.name, r, options.blend, report);
+      std::string drivers;
+      for (size_t i = 0; i < driven.size(); i += 3) {
+        const int joint = s.JointOf(driven[i].channel, db.root_joint());
+        drivers += (i ? "," : "") + (driven[i].channel >= 3 * db.num_joints() ? std::string("root") : db.skeleton().name(joint));
+      }
+      report.group_order.push_back(group.name + " <- " + drivers);
+      for (int j : group.joints) available[j] = 1;
+    }
+  }
+  if (options.texture) {
+    std::vector<int> keyed_channels;
+    for (int c = 0; c < 3 * db.num_joints(); ++c)
+      if (s.keyed[c] && !fixed.empty()) keyed_channels.push_back(c);
+    Eigen::MatrixXd source = out;
+    const GroupResult r = SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), keyed_channels, 1, source, timer);
+    TextureChannels(s.values, source, keyed_channels, TextureBandCount(s.key_spacing, rate), rate, out);
+    if (options.repin_keys) RepinKeys(s, keyed_channels, out);
+    timer.Mark("texture");
+  }
+  return OkStatus();
+}
+
+// Signals -> clip; keyed joints that were not textured keep the sketch's exact rotations.
+Result<MotionClip> Compose(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
+                           const MotionClip& sketch, bool textured) {
+  ClipSignals signals = s.raw;
+  signals.tangent = out.leftCols(3 * db.num_joints());
+  if (signals.root_features.cols() > 0) signals.root_features = out.rightCols(signals.root_features.cols());
+  ASSIGN_OR_RETURN(MotionClip clip, ComposeClip(db.skeleton(), signals, db.reference(), sketch));
+  const std::vector<std::uint8_t> fixed = FixedJoints(db, s);
+  for (int j = 0; j < db.num_joints(); ++j) {
+    const bool copy = (fixed[j] && !(textured && s.keyed[3 * j]));
+    const bool root_moves = j == db.root_joint() && RootFeaturesKeyed(db, s);
+    for (int f = 0; f < clip.num_frames; ++f) {
+      if (copy) clip.rotation(f, j) = sketch.rotation(f, j);
+      if (copy || root_moves) clip.translation(f, j) = sketch.translation(f, j);
+    }
+  }
+  clip.MakeContinuous();
+  clip.KeyAllFrames();
+  return clip;
+}
+
+void ReportJoints(const MotionDatabase& db, const SketchSignals& s, const MotionClip& sketch, const MotionClip& out,
+                  bool textured, FillReport& report) {
+  double sum = 0.0;
+  long count = 0;
+  for (int j = 0; j < db.num_joints(); ++j) {
+    JointFillInfo info;
+    info.name = db.skeleton().name(j);
+    info.keys = static_cast<int>(sketch.keys[j].rotation_frames.size());
+    info.kind = s.keyed[3 * j] ? (textured ? "textured" : "keyed") : "synthesized";
+    for (int f : sketch.keys[j].rotation_frames) {
+      const double e = GeodesicAngle(sketch.rotation(f, j), out.rotation(f, j)) * kDegPerRad;
+      info.key_error_mean_deg += e;
+      info.key_error_max_deg = std::max(info.key_error_max_deg, e);
+      sum += e;
+      ++count;
+    }
+    if (info.keys) info.key_error_mean_deg /= info.keys;
+    report.key_error_max_deg = std::max(report.key_error_max_deg, info.key_error_max_deg);
+    report.joints.push_back(info);
+  }
+  report.key_error_mean_deg = count ? sum / count : 0.0;
+}
+
+}  // namespace
+
+FillEngine::FillEngine(const MotionDatabase& db) : db_(db) {}
+FillEngine::~FillEngine() = default;
+
+Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions& options) {
+  RETURN_IF_ERROR(options.Validate());
+  if (sketch.num_frames < 1) return InvalidData("the sketch has no frames");
+  if (std::abs(sketch.sample_rate_hz - db_.rate_hz()) > 1e-9 * db_.rate_hz())
+    return InvalidArgument("the sketch must be resampled to the database rate first");
+  FillResult result;
+  FillReport& report = result.report;
+  report.method = FillMethodName(options.method);
+  report.join = JoinCriterionName(options.join);
+  report.frames = sketch.num_frames;
+  report.rate_hz = db_.rate_hz();
+  StageTimer timer(report);
+  ASSIGN_OR_RETURN(const SketchSignals s, MakeSketchSignals(db_, sketch));
+  report.key_spacing_frames = s.key_spacing;
+  Eigen::MatrixXd out = s.values;
+  timer.Mark("prepare");
+  const bool fragment_based = options.method == FillMethod::kFragment || options.method == FillMethod::kHierarchical;
+  if (options.method == FillMethod::kMean) {
+    FillMean(s, out);
+  } else if (options.method == FillMethod::kNearest) {
+    FillNearest(db_, s, options, out);
+  } else {
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, s, options, out, report, timer));
+  }
+  timer.Mark(fragment_based ? "assemble" : "match");
+  const bool textured = fragment_based && options.texture;
+  ASSIGN_OR_RETURN(result.clip, Compose(db_, s, out, sketch, textured));
+  ReportJoints(db_, s, sketch, result.clip, textured, report);
+  timer.Mark("compose");
+  return result;
+}
+
+}  // namespace mocapfill

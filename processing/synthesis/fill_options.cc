@@ -1,0 +1,74 @@
+#include "processing/synthesis/fill_options.h"
+
+#include <cmath>
+
+namespace mocapfill {
+
+namespace {
+
+Status RangeError(const char* field, double value, const char* range) {
+  return InvalidArgument(std::string(field) + ": " + std::to_string(value) + " is out of range " + range);
+}
+
+}  // namespace
+
+Status FillOptions::Validate() const {
+  if (candidates < 1 || candidates > 1024) return RangeError("candidates", candidates, "[1, 1024]");
+  if (blend < 1 || blend > candidates) return RangeError("blend", blend, "[1, candidates]");
+  if (!(fragment_band_hz > 0.0) || !std::isfinite(fragment_band_hz))
+    return RangeError("fragment_band_hz", fragment_band_hz, "(0, inf)");
+  if (!(match_band_hz > 0.0) || !std::isfinite(match_band_hz))
+    return RangeError("match_band_hz", match_band_hz, "(0, inf)");
+  if (match_samples < 2 || match_samples > 64) return RangeError("match_samples", match_samples, "[2, 64]");
+  if (!(context_fraction >= 0.0 && context_fraction <= 2.0))
+    return RangeError("context_fraction", context_fraction, "[0, 2]");
+  if (!(min_length_ratio > 0.0 && min_length_ratio <= 1.0))
+    return RangeError("min_length_ratio", min_length_ratio, "(0, 1]");
+  if (!(max_length_ratio >= 1.0 && max_length_ratio <= 10.0))
+    return RangeError("max_length_ratio", max_length_ratio, "[1, 10]");
+  if (!(seam_window_s >= 0.0 && seam_window_s <= 5.0)) return RangeError("seam_window_s", seam_window_s, "[0, 5]");
+  if (!(transition_gamma >= 0.0 && std::isfinite(transition_gamma)))
+    return RangeError("transition_gamma", transition_gamma, "[0, inf)");
+  if (max_drivers < 0) return RangeError("max_drivers", max_drivers, "[0, inf)");
+  if (!(synthesized_driver_weight >= 0.0 && synthesized_driver_weight <= 10.0))
+    return RangeError("synthesized_driver_weight", synthesized_driver_weight, "[0, 10]");
+  if (!(root_feature_weight >= 0.0 && root_feature_weight <= 100.0))
+    return RangeError("root_feature_weight", root_feature_weight, "[0, 100]");
+  if (db_phases < 0) return RangeError("db_phases", db_phases, "[0, inf)");
+  if (threads < 0) return RangeError("threads", threads, "[0, inf)");
+  return OkStatus();
+}
+
+const char* FillMethodName(FillMethod method) {
+  switch (method) {
+    case FillMethod::kMean: return "mean";
+    case FillMethod::kNearest: return "nn";
+    case FillMethod::kFragment: return "fragment";
+    case FillMethod::kHierarchical: return "hierarchical";
+  }
+  return "?";
+}
+
+const char* JoinCriterionName(JoinCriterion join) {
+  switch (join) {
+    case JoinCriterion::kBestFragment: return "best-fragment";
+    case JoinCriterion::kCostMatrix: return "cost-matrix";
+    case JoinCriterion::kBestAnimation: return "best-animation";
+  }
+  return "?";
+}
+
+Result<FillMethod> ParseFillMethod(std::string_view text) {
+  for (FillMethod m : {FillMethod::kMean, FillMethod::kNearest, FillMethod::kFragment, FillMethod::kHierarchical})
+    if (text == FillMethodName(m)) return m;
+  return InvalidArgument("unknown method '" + std::string(text) + "' (expected hierarchical, fragment, nn or mean)");
+}
+
+Result<JoinCriterion> ParseJoinCriterion(std::string_view text) {
+  for (JoinCriterion j : {JoinCriterion::kBestFragment, JoinCriterion::kCostMatrix, JoinCriterion::kBestAnimation})
+    if (text == JoinCriterionName(j)) return j;
+  return InvalidArgument("unknown join criterion '" + std::string(text) +
+                         "' (expected cost-matrix, best-fragment or best-animation)");
+}
+
+}  // namespace mocapfill

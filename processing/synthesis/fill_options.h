@@ -1,0 +1,110 @@
+// Options and report of the fill stage (issue #4; algorithms.md sections 3, 4 and 9.3): which
+// method completes the missing joints of a sketch, how fragments are matched and joined, and
+// what the report tells the user about where every synthesised stretch came from.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "processing/core/status.h"
+
+namespace mocapfill {
+
+enum class FillMethod {
+  kMean,          // B1: keyed joints as sketched, missing joints at the database mean pose
+  kNearest,       // B3: per key frame the nearest database pose in the keyed channels
+  kFragment,      // B5: fragment synthesis, all missing joints one target set (section 3)
+  kHierarchical,  // B6: fragment synthesis outward from the keyed joints (section 4)
+};
+
+// How one candidate per fragment is chosen (thesis 4.6, algorithms.md 3a.4).
+enum class JoinCriterion {
+  kBestFragment,   // the nearest candidate of every fragment (greedy)
+  kCostMatrix,     // Viterbi over candidates with transition costs at the seams
+  kBestAnimation,  // one database clip wherever it has a candidate, cost matrix elsewhere
+};
+
+// Which signal of the driven channels fragments are compared on.
+enum class MatchSignal {
+  kBand,     // the matching band L_km only (ignores constant offsets: keyframed vs captured)
+  kLowPass,  // the sketch-filtered signal itself (keeps posture offsets; captured sketches)
+};
+
+struct FillOptions {
+  FillMethod method = FillMethod::kHierarchical;
+  JoinCriterion join = JoinCriterion::kCostMatrix;
+  MatchSignal match_signal = MatchSignal::kLowPass;
+  bool texture = false;     // add the chosen fragments' high bands to keyed channels
+  bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
+  int candidates = 32;      // K best candidates kept per fragment
+  int blend = 32;           // candidates averaged per fragment (1 = the joined one alone)
+  double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
+  double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
+  int match_samples = 8;          // samples per driven channel after time-stretching
+  double context_fraction = 0.5;  // matching window extends each fragment by this share per side
+  double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
+  double max_length_ratio = 1.5;
+  double seam_window_s = 0.25;     // seam smoothing reach on each side
+  double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
+  int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
+  double synthesized_driver_weight = 0.5;  // weight of already synthesised drivers (keyed = 1)
+  double root_feature_weight = 1.0;        // weight of the root features among the drivers
+  int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
+  int threads = 0;     // matching threads (0 = hardware concurrency)
+
+  // Fails with kInvalidArgument naming the field, its value and the allowed range.
+  Status Validate() const;
+};
+
+// Names used on the command line and in reports: "mean", "nn", "fragment", "hierarchical";
+// "best-fragment", "cost-matrix", "best-animation"; "band", "lowpass".
+const char* FillMethodName(FillMethod method);
+const char* JoinCriterionName(JoinCriterion join);
+Result<FillMethod> ParseFillMethod(std::string_view text);
+Result<JoinCriterion> ParseJoinCriterion(std::string_view text);
+
+// Where one synthesised stretch came from.
+struct FragmentSource {
+  std::string group;        // joint group, e.g. "Shoulder_L..Hand_L"
+  int first_frame = 0;      // sketch frames [first_frame, last_frame]
+  int last_frame = 0;
+  std::string clip;         // database clip of the joined (lead) candidate
+  int clip_first_frame = 0;
+  int clip_last_frame = 0;
+  double distance = 0.0;    // matching distance of that candidate
+  int blended = 1;          // candidates averaged into the stretch
+};
+
+struct JointFillInfo {
+  std::string name;
+  std::string kind;               // "keyed", "textured" or "synthesized"
+  int keys = 0;                   // rotation keys in the sketch
+  double key_error_mean_deg = 0.0;  // output vs key at the keyed frames
+  double key_error_max_deg = 0.0;
+};
+
+struct StageTime {
+  std::string stage;
+  double seconds = 0.0;
+};
+
+struct FillReport {
+  std::string method;
+  std::string join;
+  int frames = 0;
+  double rate_hz = 0.0;
+  int key_spacing_frames = 0;     // median spacing of the sketch's keys
+  std::string master_channel;     // fragmentation channel
+  int fragment_band = -1;
+  int sketch_fragments = 0;
+  int seams = 0;                  // fragment boundaries where the lead candidate switches take
+  double key_error_mean_deg = 0.0;
+  double key_error_max_deg = 0.0;
+  std::vector<JointFillInfo> joints;
+  std::vector<FragmentSource> fragments;
+  std::vector<StageTime> stages;
+  std::vector<std::string> group_order;  // hierarchical: groups in synthesis order with drivers
+};
+
+}  // namespace mocapfill

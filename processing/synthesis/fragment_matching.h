@@ -1,0 +1,54 @@
+// Fragmentation of the sketch and matching of its fragments against the database
+// (algorithms.md 3a.2-3a.3, thesis 4.3-4.4): the sketch is cut where the master channel's band
+// changes direction, and every sketch fragment is compared with every database fragment of
+// the same direction and a similar length, after stretching both to the same sample count.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "processing/core/status.h"
+#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/matching_database.h"
+#include "processing/synthesis/sketch_signals.h"
+
+namespace mocapfill {
+
+// Sketch frames [first, last] inclusive; consecutive fragments share the boundary frame.
+struct SketchFragment {
+  int first = 0;
+  int last = 0;
+  bool rising = false;
+};
+
+// One matching candidate: a database fragment and its distance (mean squared difference of
+// the normalised driven signals per sample and channel).
+struct Candidate {
+  int fragment = 0;  // index into MatchingDatabase::fragments()
+  float distance = 0.0f;
+};
+
+// A channel of the driven set and its weight in the distance.
+struct DrivenChannel {
+  int channel = 0;
+  double weight = 1.0;
+};
+
+// Cuts the sketch on the band `band` of its densified channel `master_channel`.
+Result<std::vector<SketchFragment>> FragmentSketch(const SketchSignals& sketch, int master_channel, int band,
+                                                   double rate_hz);
+
+// The keyed channel (joint tangent component) with the most energy in band `band` of the
+// densified sketch: the default master channel (algorithms.md 3a.1).
+int ChooseMasterChannel(const SketchSignals& sketch, int band, double rate_hz);
+
+// The K best candidates of every sketch fragment, ascending distance; a fragment with no
+// admissible database fragment (direction, length ratio) gets the nearest ones regardless of
+// direction and length. `sketch_match` is the matching signal of the sketch (frames x
+// channels, MatchingSignal of its current values). Work is split over options.threads.
+std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                                                   const std::vector<SketchFragment>& fragments,
+                                                   const std::vector<DrivenChannel>& driven,
+                                                   const FillOptions& options);
+
+}  // namespace mocapfill
