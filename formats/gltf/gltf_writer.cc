@@ -1,4 +1,226 @@
+// glTF export: joints as nodes, one animation per clip on a shared time accessor, meshes
+// and skins, provenance in asset.extras.mocapfill. Serialised by tinygltf into memory.
 #include "formats/gltf/gltf_writer.h"
+
+#include <tiny_gltf.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "formats/gltf/gltf_export_internal.h"
+
 namespace mocapfill {
-Result<std::string> WriteGltf(const Scene&, bool, const ExportOptions&) { return Unsupported("glTF export is not built yet"); }
+
+namespace {
+
+using gltf_internal::BufferWriter;
+using Value = tinygltf::Value;
+
+std::string Str(int64_t v) { return std::to_string(v); }
+
+Value NumberArray(const Eigen::Vector3d& v) { return Value(Value::Array{Value(v.x()), Value(v.y()), Value(v.z())}); }
+
+void AddJointNodes(const Skeleton& skeleton, tinygltf::Model& model) {
+  for (int j = 0; j < skeleton.num_joints(); ++j) {
+    const Joint& joint = skeleton.joint(j);
+    tinygltf::Node node;
+    node.name = joint.name;
+    if (!joint.rest_translation.isZero(0.0))
+      node.translation = {joint.rest_translation.x(), joint.rest_translation.y(), joint.rest_translation.z()};
+    const Eigen::Quaterniond r = joint.rest_rotation.normalized();
+    if (!r.coeffs().isApprox(Eigen::Quaterniond::Identity().coeffs(), 0.0)) node.rotation = {r.x(), r.y(), r.z(), r.w()};
+    if (joint.rest_scale != Eigen::Vector3d::Ones())
+      node.scale = {joint.rest_scale.x(), joint.rest_scale.y(), joint.rest_scale.z()};
+    for (int c : skeleton.Children(j)) node.children.push_back(c);
+    // The BVH layout rides along so that glb -> BVH gives back the source's channels.
+    Value::Object extras;
+    if (!joint.bvh_channels.empty()) {
+      Value::Array channels;
+      for (const std::string& c : joint.bvh_channels) channels.emplace_back(c);
+      extras["bvh_channels"] = Value(std::move(channels));
+    }
+    if (joint.end_site) extras["bvh_end_site"] = NumberArray(*joint.end_site);
+    if (!extras.empty()) node.extras = Value(std::move(extras));
+    model.nodes.push_back(std::move(node));
+  }
+}
+
+// Frame times as float32 (computed in double, then rounded), strictly increasing.
+Result<std::vector<float>> FrameTimes(const MotionClip& clip) {
+  std::vector<float> times(clip.num_frames);
+  for (int f = 0; f < clip.num_frames; ++f) {
+    times[f] = static_cast<float>(f / clip.sample_rate_hz);
+    if (f > 0 && times[f] <= times[f - 1])
+      return Unsupported("clip '" + clip.name + "': frame times " + Str(f - 1) + " and " + Str(f) +
+                         " are equal in float32; the clip is too long for its frame rate");
+  }
+  return times;
+}
+
+// Unit quaternions (x, y, z, w) as float32, normalised after rounding (the validator checks
+// float lengths) and kept on one hemisphere from frame to frame.
+std::vector<float> RotationOutput(const MotionClip& clip, int joint) {
+  std::vector<float> out(static_cast<size_t>(clip.num_frames) * 4);
+  Eigen::Vector4d previous = Eigen::Vector4d::Zero();
+  for (int f = 0; f < clip.num_frames; ++f) {
+    const Eigen::Quaterniond& q = clip.rotation(f, joint);
+    Eigen::Vector4d v = Eigen::Vector4d(q.x(), q.y(), q.z(), q.w()).normalized();
+    if (v.dot(previous) < 0) v = -v;
+    previous = v;
+    const Eigen::Vector4d rounded = v.cast<float>().cast<double>();
+    const Eigen::Vector4f unit = (rounded / rounded.norm()).cast<float>();
+    for (int c = 0; c < 4; ++c) out[4 * f + c] = unit[c];
+  }
+  return out;
+}
+
+void AddSampledChannel(tinygltf::Animation& animation, int input, int output, int node, const char* path) {
+  tinygltf::AnimationSampler sampler;
+  sampler.input = input;
+  sampler.output = output;
+  sampler.interpolation = "LINEAR";
+  animation.samplers.push_back(std::move(sampler));
+  tinygltf::AnimationChannel channel;
+  channel.sampler = static_cast<int>(animation.samplers.size()) - 1;
+  channel.target_node = node;
+  channel.target_path = path;
+  animation.channels.push_back(std::move(channel));
+}
+
+Status AddAnimation(const MotionClip& clip, BufferWriter& buffer, tinygltf::Model& model) {
+  ASSIGN_OR_RETURN(const std::vector<float> times, FrameTimes(clip));
+  const int time_view = buffer.AddView(times.data(), times.size() * sizeof(float));
+  const int input = buffer.AddAccessor(time_view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, times.size(),
+                                       {times.front()}, {times.back()});
+  const size_t n = clip.num_frames;
+  std::vector<float> rotations;
+  rotations.reserve(n * 4 * clip.num_joints);
+  for (int j = 0; j < clip.num_joints; ++j) {
+    const std::vector<float> r = RotationOutput(clip, j);
+    rotations.insert(rotations.end(), r.begin(), r.end());
+  }
+  const int rotation_view = buffer.AddView(rotations.data(), rotations.size() * sizeof(float));
+  std::vector<int> moving;
+  std::vector<float> translations;
+  for (int j = 0; j < clip.num_joints; ++j) {
+    if (!clip.translation_animated[j]) continue;
+    moving.push_back(j);
+    for (size_t f = 0; f < n; ++f)
+      for (int c = 0; c < 3; ++c) translations.push_back(static_cast<float>(clip.translation(f, j)[c]));
+  }
+  const int translation_view =
+      moving.empty() ? -1 : buffer.AddView(translations.data(), translations.size() * sizeof(float));
+
+  tinygltf::Animation animation;
+  animation.name = clip.name;
+  for (int j = 0; j < clip.num_joints; ++j) {
+    const int output = buffer.AddAccessor(rotation_view, j * n * 16, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, n);
+    AddSampledChannel(animation, input, output, j, "rotation");
+  }
+  for (size_t k = 0; k < moving.size(); ++k) {
+    const int output = buffer.AddAccessor(translation_view, k * n * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+    AddSampledChannel(animation, input, output, moving[k], "translation");
+  }
+  model.animations.push_back(std::move(animation));
+  return OkStatus();
+}
+
+// Inclusive [first, last] runs of a sorted frame list: compact for dense and sparse keys alike.
+Value FrameRanges(const std::vector<int>& frames) {
+  Value::Array ranges;
+  for (size_t k = 0; k < frames.size();) {
+    size_t end = k;
+    while (end + 1 < frames.size() && frames[end + 1] == frames[end] + 1) ++end;
+    ranges.emplace_back(Value::Array{Value(frames[k]), Value(frames[end])});
+    k = end + 1;
+  }
+  return Value(std::move(ranges));
+}
+
+// Keys are recorded only when they differ from what re-reading the exported channels gives
+// (every frame keyed; translations where animated), i.e. for sparse or partly filled clips.
+bool KeysAreDense(const MotionClip& clip) {
+  for (int j = 0; j < clip.num_joints; ++j) {
+    const JointKeys& k = clip.keys[j];
+    if (static_cast<int>(k.rotation_frames.size()) != clip.num_frames) return false;
+    const size_t expected_t = clip.translation_animated[j] ? clip.num_frames : 0;
+    if (k.translation_frames.size() != expected_t) return false;
+  }
+  return true;  // sorted, unique and in range (Validate), so the sizes say it all
+}
+
+Value ClipExtras(const MotionClip& clip, const Skeleton& skeleton) {
+  Value::Object entry;
+  entry["name"] = Value(clip.name);
+  entry["sample_rate_hz"] = Value(clip.sample_rate_hz);
+  entry["frames"] = Value(clip.num_frames);
+  if (!KeysAreDense(clip)) {
+    Value::Object keys;
+    for (int j = 0; j < clip.num_joints; ++j) {
+      const JointKeys& k = clip.keys[j];
+      if (k.empty()) continue;
+      Value::Object joint;
+      if (!k.rotation_frames.empty()) joint["rotation"] = FrameRanges(k.rotation_frames);
+      if (!k.translation_frames.empty()) joint["translation"] = FrameRanges(k.translation_frames);
+      keys[skeleton.name(j)] = Value(std::move(joint));
+    }
+    entry["keys"] = Value(std::move(keys));
+  }
+  return Value(std::move(entry));
+}
+
+Value ProvenanceExtras(const Scene& scene) {
+  const SourceInfo& s = scene.source;
+  Value::Object info;
+  info["source_format"] = Value(s.format);
+  // The file name only: the full path would make output depend on the machine.
+  info["source_file"] = Value(std::filesystem::path(s.path).filename().string());
+  info["unit_name"] = Value(s.unit_name);
+  info["metres_per_unit"] = Value(s.unit_scale_to_m);
+  info["unit_detected"] = Value(s.unit_detected);
+  info["source_up_axis"] = Value(s.up_axis);
+  info["up_axis_conversion"] = Value(std::string(s.up_axis == "z" ? "z_up_to_y_up" : "none"));
+  if (!s.source_frame_time_text.empty()) {
+    info["source_frame_time_text"] = Value(s.source_frame_time_text);
+    info["source_frame_time_s"] = Value(s.source_frame_time_s);
+  }
+  Value::Array clips;
+  for (const MotionClip& clip : scene.clips) clips.push_back(ClipExtras(clip, scene.skeleton));
+  info["clips"] = Value(std::move(clips));
+  return Value(Value::Object{{"mocapfill", Value(std::move(info))}});
+}
+
+Status CheckExportable(const Scene& scene) {
+  if (scene.skeleton.num_joints() == 0) return InvalidArgument("nothing to export: the scene has no skeleton");
+  for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(clip.Validate(scene.skeleton));
+  return OkStatus();
+}
+
+}  // namespace
+
+Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptions& options) {
+  RETURN_IF_ERROR(CheckExportable(scene));
+  tinygltf::Model model;
+  BufferWriter buffer(model);
+  AddJointNodes(scene.skeleton, model);
+  std::vector<int> roots = scene.skeleton.Roots();
+  RETURN_IF_ERROR(gltf_internal::ExportMeshes(scene, buffer, model, roots));
+  for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(AddAnimation(clip, buffer, model));
+  buffer.Finish();
+
+  tinygltf::Scene gltf_scene;
+  gltf_scene.nodes = roots;
+  model.scenes.push_back(std::move(gltf_scene));
+  model.defaultScene = 0;
+  model.asset.generator = "mocapfill";
+  model.asset.version = "2.0";
+  model.asset.extras = ProvenanceExtras(scene);
+
+  tinygltf::TinyGLTF writer;
+  std::ostringstream out;
+  if (!writer.WriteGltfSceneToStream(&model, out, options.pretty, binary) || !out)
+    return Internal("tinygltf could not serialise the glTF model");
+  return out.str();
+}
+
 }  // namespace mocapfill

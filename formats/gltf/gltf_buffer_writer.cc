@@ -1,0 +1,43 @@
+#include <tiny_gltf.h>
+
+#include "formats/gltf/gltf_export_internal.h"
+
+namespace mocapfill::gltf_internal {
+
+int BufferWriter::AddView(const void* data, size_t size, int target) {
+  bytes_.resize((bytes_.size() + 3) / 4 * 4, 0);  // zero padding to the next 4-byte boundary
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = bytes_.size();
+  view.byteLength = size;
+  view.target = target;
+  const auto* p = static_cast<const unsigned char*>(data);
+  bytes_.insert(bytes_.end(), p, p + size);
+  model_.bufferViews.push_back(std::move(view));
+  return static_cast<int>(model_.bufferViews.size()) - 1;
+}
+
+int BufferWriter::AddAccessor(int view, size_t byte_offset, int component_type, int type, size_t count,
+                              const std::vector<double>& min, const std::vector<double>& max) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = view;
+  accessor.byteOffset = byte_offset;
+  accessor.componentType = component_type;
+  accessor.type = type;
+  accessor.count = count;
+  accessor.minValues = min;
+  accessor.maxValues = max;
+  model_.accessors.push_back(std::move(accessor));
+  return static_cast<int>(model_.accessors.size()) - 1;
+}
+
+void BufferWriter::Finish() {
+  if (bytes_.empty()) return;
+  bytes_.resize((bytes_.size() + 3) / 4 * 4, 0);
+  tinygltf::Buffer buffer;
+  buffer.data = std::move(bytes_);
+  model_.buffers.push_back(std::move(buffer));
+  bytes_.clear();
+}
+
+}  // namespace mocapfill::gltf_internal

@@ -1,0 +1,46 @@
+// Internal to formats/gltf: pieces of the writer shared between its .cc files. tinygltf
+// stays out of headers; the model is only forward-declared here.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "processing/core/scene.h"
+#include "processing/core/status.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace mocapfill::gltf_internal {
+
+// The single binary buffer of an exported file, with the buffer views and accessors over
+// it. Views start on 4-byte boundaries with zero padding between them, and carry no
+// byteStride (every view is tightly packed), so the bytes are the same on every run.
+class BufferWriter {
+ public:
+  explicit BufferWriter(tinygltf::Model& model) : model_(model) {}
+
+  // Appends `size` bytes as a new buffer view; `target` is 0 (animation, skin data),
+  // 34962 (vertex attributes) or 34963 (indices). Returns the view index.
+  int AddView(const void* data, size_t size, int target = 0);
+
+  // Adds an accessor over `view` at `byte_offset`; min/max only when given.
+  int AddAccessor(int view, size_t byte_offset, int component_type, int type, size_t count,
+                  const std::vector<double>& min = {}, const std::vector<double>& max = {});
+
+  // Pads the bytes to a multiple of 4 and stores them as buffers[0] (if any were added).
+  void Finish();
+
+ private:
+  tinygltf::Model& model_;
+  std::vector<unsigned char> bytes_;
+};
+
+// Adds the scene's meshes, their materials and the skins they use. Joint j must already be
+// node j. Skinned-mesh nodes go to the scene root with an identity transform (the
+// validator warns about anything else); rigid meshes become children of their joint's
+// node. Root-level mesh nodes are appended to `scene_roots`.
+Status ExportMeshes(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model, std::vector<int>& scene_roots);
+
+}  // namespace mocapfill::gltf_internal
