@@ -188,11 +188,20 @@ Result<MotionClip> ConvertAnimation(const aiAnimation& anim, int index, const No
     }
     if (scale_dropped)
       warnings.push_back(what + ": scale animation of joint '" + skeleton.name(j) + "' is not supported; rest scale kept");
-    for (int v : chain) {
-      if (track_of_node[v] < 0) continue;
-      const Track& track = tracks[track_of_node[v]];
-      AddKeyFrames(track.rot_t, shift, tps, rate_hz, frames, clip.keys[j].rotation_frames);
-      AddKeyFrames(track.pos_t, shift, tps, rate_hz, frames, clip.keys[j].translation_frames);
+    for (size_t c = 0; c < chain.size(); ++c) {
+      if (track_of_node[chain[c]] < 0) continue;
+      const Track& track = tracks[track_of_node[chain[c]]];
+      JointKeys& keys = clip.keys[j];
+      AddKeyFrames(track.rot_t, shift, tps, rate_hz, frames, keys.rotation_frames);
+      AddKeyFrames(track.pos_t, shift, tps, rate_hz, frames, keys.translation_frames);
+      // A rotation or scale above an offset (an FBX pivot helper) moves the joint's origin.
+      const bool offset_below = std::any_of(chain.begin() + c + 1, chain.end(), [&](int v) {
+        return g.local[v].block<3, 1>(0, 3).squaredNorm() > 0.0;
+      });
+      if (offset_below) {
+        AddKeyFrames(track.rot_t, shift, tps, rate_hz, frames, keys.translation_frames);
+        AddKeyFrames(track.scl_t, shift, tps, rate_hz, frames, keys.translation_frames);
+      }
     }
   }
   for (int j = 0; j < clip.num_joints; ++j) {

@@ -14,6 +14,9 @@ static_assert(sizeof(aiMatrix4x4) == 16 * sizeof(float), "Assimp built with ai_r
 
 namespace {
 
+// Helper nodes are named "<node>_$AssimpFbx$_<component>".
+constexpr char kFbxHelperTag[] = "_$AssimpFbx$_";
+
 // Nodes are walked with an explicit stack: deep chains (long ropes, tails) must not
 // overflow the call stack.
 void Flatten(const aiScene& scene, NodeGraph& g) {
@@ -43,12 +46,17 @@ NodeRoles FindRoles(const aiScene& scene, const NodeGraph& g) {
   for (unsigned m = 0; m < scene.mNumMeshes; ++m)
     for (unsigned b = 0; b < scene.mMeshes[m]->mNumBones; ++b)
       if (const int v = g.Find(scene.mMeshes[m]->mBones[b]->mName.C_Str()); v >= 0) roles.bone[v] = 1;
-  for (unsigned a = 0; a < scene.mNumAnimations; ++a)
-    for (unsigned c = 0; c < scene.mAnimations[a]->mNumChannels; ++c)
-      if (const int v = g.Find(scene.mAnimations[a]->mChannels[c]->mNodeName.C_Str()); v >= 0) roles.target[v] = 1;
   std::unordered_set<std::string> attachments;  // cameras and lights are attached to nodes by name
   for (unsigned i = 0; i < scene.mNumCameras; ++i) attachments.insert(scene.mCameras[i]->mName.C_Str());
   for (unsigned i = 0; i < scene.mNumLights; ++i) attachments.insert(scene.mLights[i]->mName.C_Str());
+  // An animated camera or light (or one of its pivot helpers) does not make a skeleton.
+  for (unsigned a = 0; a < scene.mNumAnimations; ++a) {
+    for (unsigned c = 0; c < scene.mAnimations[a]->mNumChannels; ++c) {
+      const std::string target = scene.mAnimations[a]->mChannels[c]->mNodeName.C_Str();
+      const int v = g.Find(target);
+      if (v >= 0 && !attachments.count(target.substr(0, target.find(kFbxHelperTag)))) roles.target[v] = 1;
+    }
+  }
   for (size_t v = 0; v < n; ++v) {
     const aiNode* node = g.nodes[v];
     for (unsigned k = 0; k < node->mNumMeshes; ++k)

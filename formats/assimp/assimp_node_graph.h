@@ -65,7 +65,7 @@ struct ImportedSkeleton {
 };
 
 // Flattens the node tree and picks the joints: nodes named by mesh bones or animation
-// channels, their ancestors below the scene root, and every other transform node in
+// channels (except animated cameras and lights), their ancestors below the scene root, and every other transform node in
 // those trees, except Assimp helper nodes and nodes that carry skinned meshes. With no
 // bones and no animation, pure transform hierarchies (no meshes, cameras or lights) of
 // two or more nodes are taken as static skeletons. Duplicate or empty joint names get a

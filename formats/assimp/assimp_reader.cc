@@ -31,9 +31,9 @@ namespace {
 
 using assimp_detail::ImportedSkeleton;
 
-// Pivots folded into node transforms (no $AssimpFbx$ helper nodes), triangles only,
-// shared vertices, at most four weights per vertex, UV origin at the top left as in glTF,
-// and Assimp's own consistency checks so a corrupt file fails there, not in our code.
+// Triangles only, shared vertices, at most four weights per vertex, UV origin at the top
+// left as in glTF, and Assimp's own consistency checks so a corrupt file fails there, not
+// in our code.
 // Translation change under which a joint counts as not translating (1 um).
 constexpr double kStillTranslationM = 1e-6;
 
@@ -55,7 +55,12 @@ Result<const aiScene*> ImportScene(Assimp::Importer& importer, const std::string
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return IoError(path + ": is a directory, expected a file");
   if (!std::ifstream(path, std::ios::binary)) return IoError(path + ": cannot open for reading (" + std::strerror(errno) + ")");
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+  // FBX pivots, offsets and pre/post rotations are kept as $AssimpFbx$ helper nodes, which
+  // BuildSkeleton folds into their joint. Assimp 5.2's alternative (PRESERVE_PIVOTS false)
+  // bakes the rest transform into one node but still emits the animation as a rotation-only
+  // channel for the missing node "<joint>_$AssimpFbx$_Rotation", which cannot be applied
+  // without the pivots it dropped (assimp#1068, #4005).
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, true);
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_READ_TEXTURES, false);
   importer.SetPropertyInteger(AI_CONFIG_PP_LBW_MAX_WEIGHTS, 4);
   const aiScene* scene = nullptr;

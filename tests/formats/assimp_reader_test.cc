@@ -12,6 +12,7 @@
 #include <map>
 
 #include "formats/assimp/assimp_reader.h"
+#include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
 #include "tests/support/test_paths.h"
 
@@ -242,6 +243,85 @@ TEST(AssimpFbx, OptionsOverrideUnitUpAxisRateAndPickAnimations) {
   ImportOptions bad_unit;
   bad_unit.unit = "furlong";
   EXPECT_EQ(ReadWithAssimp(testing::FixturePath(kFbx), bad_unit).status().code(), ErrorCode::kInvalidArgument);
+}
+
+// fbx/pivot_chain.fbx (hand-written ASCII FBX): Hips at T (0, 100, 0) cm with RotationPivot
+// (0, 10, 0), PreRotation 90 deg about Z and Lcl Rotation about X keyed 0, 45, 90 deg at
+// 0, 0.5, 1 s; Spine at (0, 20, 0) below it. By the FBX transform formula
+// T * Rp * Rpre * R * Rp^-1 the Hips origin is (0, 110, 0) + Rpre * R * (0, -10, 0) and the
+// Spine is at (0, 110, 0) + Rpre * R * (0, 10, 0) (cm).
+TEST(AssimpFbxPivots, PivotHelpersAreFoldedIntoTheJointAndItsAnimation) {
+  const Result<Scene> imported = ReadWithAssimp(testing::FixturePath("fbx/pivot_chain.fbx"), {});
+  ASSERT_TRUE(imported.ok()) << imported.status().message();
+  const Scene& scene = *imported;
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  const Skeleton& s = scene.skeleton;
+  ASSERT_EQ(s.num_joints(), 2);  // no "Hips_$AssimpFbx$_RotationPivot" and friends
+  EXPECT_EQ(s.name(0), "Hips");
+  EXPECT_EQ(s.name(1), "Spine");
+  EXPECT_EQ(s.parent(1), 0);
+  ASSERT_EQ(scene.clips.size(), 1u);
+  const MotionClip& clip = scene.clips[0];
+  EXPECT_EQ(clip.name, "Take 001");
+  EXPECT_DOUBLE_EQ(clip.sample_rate_hz, 24.0);
+  EXPECT_EQ(clip.num_frames, 25);
+  EXPECT_EQ(clip.keys[0].rotation_frames, (std::vector<int>{0, 12, 24}));
+  // The pivot makes the rotation keys move the Hips origin too.
+  EXPECT_EQ(clip.keys[0].translation_frames, (std::vector<int>{0, 12, 24}));
+  EXPECT_EQ(clip.translation_animated[0], 1);
+  EXPECT_TRUE(clip.keys[1].empty());
+
+  const double h = 0.1 * std::sqrt(0.5);
+  const std::map<int, std::pair<Eigen::Vector3d, Eigen::Vector3d>> expected = {
+      {0, {{0.1, 1.1, 0.0}, {-0.1, 1.1, 0.0}}},
+      {12, {{h, 1.1, -h}, {-h, 1.1, h}}},
+      {24, {{0.0, 1.1, -0.1}, {0.0, 1.1, 0.1}}}};
+  WorldPose pose;
+  for (const auto& [frame, hips_spine] : expected) {
+    ComputeWorldPose(s, clip, frame, pose);
+    EXPECT_LT((pose.positions[0] - hips_spine.first).norm(), 1e-6) << "Hips, frame " << frame;
+    EXPECT_LT((pose.positions[1] - hips_spine.second).norm(), 1e-6) << "Spine, frame " << frame;
+  }
+}
+
+// Other Assimp formats, from the shared corpus: the Khronos tutorial skins as Assimp reads
+// them (glTF is metres by definition, so no unit guessing).
+TEST(AssimpCorpus, SimpleSkinGltfThroughAssimp) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Result<Scene> scene = ReadWithAssimp(testing::DataPath("assimp/simple_skin.gltf"), {});
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  EXPECT_EQ(scene->source.format, "gltf");
+  EXPECT_EQ(scene->source.unit_name, "m");
+  ASSERT_EQ(scene->skeleton.num_joints(), 2);
+  EXPECT_EQ(scene->skeleton.parent(1), 0);
+  EXPECT_TRUE(scene->skeleton.joint(0).rest_translation.isApprox(Eigen::Vector3d(0, 1, 0)));
+  // One rotation sampler on the second joint, keys every 0.5 s from 0 to 5.5 s.
+  ASSERT_EQ(scene->clips.size(), 1u);
+  const MotionClip& clip = scene->clips[0];
+  EXPECT_DOUBLE_EQ(clip.sample_rate_hz, 24.0);
+  EXPECT_EQ(clip.num_frames, 133);
+  EXPECT_NEAR(clip.duration_s(), 5.5, 1e-12);
+  EXPECT_EQ(clip.keys[1].rotation_frames.size(), 12u);
+  EXPECT_EQ(clip.keys[1].rotation_frames.back(), 132);
+  ASSERT_EQ(scene->skins.size(), 1u);
+  EXPECT_EQ(scene->skins[0].joints.size(), 2u);
+  const MeshPrimitive& prim = scene->meshes.at(0).primitives.at(0);
+  EXPECT_EQ(prim.positions.size(), 10u);
+  EXPECT_EQ(prim.indices.size(), 24u);
+  for (const Eigen::Vector4f& w : prim.weights) EXPECT_NEAR(static_cast<double>(w.sum()), 1.0, 1e-6);
+}
+
+TEST(AssimpCorpus, StaticSkinGlbGivesASkeletonAndNoClips) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Result<Scene> scene = ReadWithAssimp(testing::DataPath("assimp/quad_skin.glb"), {});
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  EXPECT_EQ(scene->source.unit_name, "m");
+  EXPECT_FALSE(scene->source.unit_detected);
+  EXPECT_EQ(scene->skeleton.num_joints(), 21);  // Armature, Bone.000..Bone.009 and their _end nodes
+  EXPECT_TRUE(scene->clips.empty());
+  ASSERT_EQ(scene->skins.size(), 1u);
+  EXPECT_EQ(scene->skins[0].joints.size(), 7u);  // Assimp drops the three bones that weight nothing
+  EXPECT_EQ(scene->meshes.at(0).primitives.at(0).positions.size(), 4u);
 }
 
 void ExpectInvalidDataNamingFile(const std::string& path) {
