@@ -3,3 +3,9 @@
 mocapfill_add_test(assimp_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/assimp_reader_test.cc ${CMAKE_CURRENT_LIST_DIR}/assimp_fixups_test.cc
   LIBS mocapfill_assimp)
+
+# FBX -> glb -> import through ImportFile/ExportFile; the glb files stay in
+# <build>/test-output/fbx for the CI glTF-Validator pass.
+mocapfill_add_test(assimp_roundtrip_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/assimp_roundtrip_test.cc
+  LIBS mocapfill_formats)
