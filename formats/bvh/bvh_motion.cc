@@ -1,0 +1,195 @@
+#include "formats/bvh/bvh_motion.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <climits>
+#include <vector>
+
+#include "formats/bvh/bvh_number.h"
+#include "processing/core/rotation.h"
+
+namespace mocapfill::bvh {
+
+namespace {
+
+// Where one joint's values sit in a motion row (absolute indices, -1 when absent).
+struct JointSampler {
+  std::array<int, 3> rotation_index{-1, -1, -1};
+  std::array<int, 3> position_index{-1, -1, -1};
+  int num_rotations = 0;
+  EulerOrder order;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+};
+
+std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
+  std::vector<JointSampler> samplers;
+  samplers.reserve(hierarchy.joints.size());
+  for (const ParsedJoint& joint : hierarchy.joints) {
+    JointSampler s;
+    for (int i = 0; i < 3; ++i) {
+      if (joint.layout.rotation_slot[i] >= 0) s.rotation_index[i] = joint.first_channel + joint.layout.rotation_slot[i];
+      if (joint.layout.position_slot[i] >= 0) s.position_index[i] = joint.first_channel + joint.layout.position_slot[i];
+    }
+    s.num_rotations = joint.layout.num_rotations;
+    s.order = joint.layout.order;
+    s.offset = joint.offset;
+    samplers.push_back(s);
+  }
+  return samplers;
+}
+
+// Position channels replace the OFFSET component they name; rotation channels compose
+// intrinsically in listed order (unlisted axes contribute nothing).
+void AppendFrame(const std::vector<JointSampler>& samplers, const double* row, MotionClip& clip) {
+  for (const JointSampler& s : samplers) {
+    Eigen::Vector3d t = s.offset;
+    for (int a = 0; a < 3; ++a)
+      if (s.position_index[a] >= 0) t[a] = row[s.position_index[a]];
+    clip.translations.push_back(t);
+    if (s.num_rotations == 0) {
+      clip.rotations.push_back(Eigen::Quaterniond::Identity());
+      continue;
+    }
+    std::array<double, 3> angles_deg{};
+    for (int i = 0; i < 3; ++i)
+      if (s.rotation_index[i] >= 0) angles_deg[i] = row[s.rotation_index[i]];
+    clip.rotations.push_back(ComposeEulerDegrees(angles_deg, s.order));
+  }
+}
+
+struct RowEnd {
+  enum Kind { kComplete, kShort, kBadValue, kLong } kind;
+  int values;  // parsed before stopping
+};
+
+// Reads one row of `channels` values from p (which must start a non-blank line), leaving
+// p at the line end, or where the row went wrong.
+RowEnd ScanRow(const char*& p, const char* end, double* row, int channels) {
+  for (int c = 0; c < channels; ++c) {
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    if (p == end || *p == '\n' || *p == '\r') return {RowEnd::kShort, c};
+    const char* next = ParseNumber(p, end, row[c]);
+    if (next == nullptr || !IsFiniteNumber(row[c])) return {RowEnd::kBadValue, c};
+    p = next;
+  }
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  if (p < end && *p != '\n' && *p != '\r') return {RowEnd::kLong, channels};
+  return {RowEnd::kComplete, channels};
+}
+
+std::string FrameCounts(int64_t frame, const MotionHeader& header) {
+  return "frame " + std::to_string(frame) + " (0-based; " + std::to_string(frame) + " complete of " +
+         std::to_string(header.declared_frames) + " declared)";
+}
+
+[[gnu::cold]] Status RowEndsEarly(const BvhLexer& lexer, int64_t frame, int values, int expected,
+                                  const MotionHeader& header) {
+  if (lexer.AtEnd())
+    return lexer.ErrorAt(lexer.Here(), "the motion data is truncated in " + FrameCounts(frame, header) + ": the row has " +
+                                           std::to_string(values) + " of " + std::to_string(expected) + " values");
+  return lexer.ErrorAt(lexer.Here(), "frame " + std::to_string(frame) + " has " + std::to_string(values) +
+                                         " values, expected " + std::to_string(expected) +
+                                         " (one row per frame, one value per channel)");
+}
+
+[[gnu::cold]] Status BadValue(const BvhLexer& lexer, int64_t frame) {
+  // Tell "nan"/"inf" (parsed, but not finite) apart from text that is no number at all.
+  std::string_view rest = lexer.TextFromHere();
+  size_t length = 0;
+  while (length < rest.size() && rest[length] != ' ' && rest[length] != '\t' && rest[length] != '\n' &&
+         rest[length] != '\r')
+    ++length;
+  const char* begin = rest.data() + (length > 0 && rest[0] == '+' ? 1 : 0);
+  double value = 0.0;
+  const auto [ptr, ec] = std::from_chars(begin, rest.data() + length, value);
+  const bool non_finite = ec == std::errc() && ptr == rest.data() + length;
+  const bool out_of_range = ec == std::errc::result_out_of_range;
+  const std::string what = non_finite ? "expected a finite number" : out_of_range ? "number out of range" : "expected a number";
+  return lexer.ErrorAt(lexer.Here(), what + ", got " + lexer.QuoteTokenAt(lexer.position()) + " in frame " +
+                                         std::to_string(frame));
+}
+
+[[gnu::cold]] Status RowTooLong(const BvhLexer& lexer, int64_t frame, int expected) {
+  return lexer.ErrorAt(lexer.Here(), "frame " + std::to_string(frame) + " has more than " + std::to_string(expected) +
+                                         " values: unexpected " + lexer.QuoteTokenAt(lexer.position()));
+}
+
+// Reads "Frames:" or "Frames" ":", and "Frame Time:" split across tokens in any of the
+// ways files write it.
+Status ExpectLabel(BvhLexer& lexer, std::string_view word, const char* label) {
+  const std::string_view token = lexer.NextToken();
+  if (EqualsIgnoreCase(token, std::string(word) + ":")) return OkStatus();
+  if (EqualsIgnoreCase(token, word)) {
+    const std::string_view colon = lexer.NextToken();
+    if (colon == ":") return OkStatus();
+  }
+  return lexer.ErrorAt(lexer.token_location(), std::string("expected '") + label + "', got " +
+                                                   (token.empty() ? std::string("the end of the file")
+                                                                  : BvhLexer::Quote(token)));
+}
+
+}  // namespace
+
+Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer) {
+  MotionHeader header;
+  RETURN_IF_ERROR(ExpectLabel(lexer, "Frames", "Frames:"));
+  ASSIGN_OR_RETURN(header.declared_frames, lexer.NextCount("the Frames count", INT_MAX));
+  header.frames_location = lexer.token_location();
+  const std::string_view frame = lexer.NextToken();
+  if (!EqualsIgnoreCase(frame, "Frame"))
+    return lexer.ErrorAt(lexer.token_location(), "expected 'Frame Time:', got " +
+                                                     (frame.empty() ? std::string("the end of the file")
+                                                                    : BvhLexer::Quote(frame)));
+  RETURN_IF_ERROR(ExpectLabel(lexer, "Time", "Frame Time:"));
+  ASSIGN_OR_RETURN(header.frame_time_s, lexer.NextNumber("the Frame Time"));
+  header.frame_time_text = std::string(lexer.last_token());
+  if (!(header.frame_time_s > 0.0))
+    return lexer.ErrorAt(lexer.token_location(), "the Frame Time must be positive, got " +
+                                                     BvhLexer::Quote(header.frame_time_text));
+  lexer.SkipBlanks();
+  if (!lexer.AtLineEnd())
+    return lexer.ErrorAt(lexer.Here(), "unexpected " + lexer.QuoteTokenAt(lexer.position()) +
+                                           " after the Frame Time (frame rows start on the next line)");
+  return header;
+}
+
+Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const MotionHeader& header,
+                       MotionClip& clip) {
+  const int channels = hierarchy.num_channels;
+  const std::vector<JointSampler> samplers = MakeSamplers(hierarchy);
+  clip.num_joints = static_cast<int>(samplers.size());
+  // Reserve for the declared frames, but never more than the rest of the file can hold
+  // (every value takes at least two bytes), so "Frames: 1000000000" cannot exhaust memory.
+  const size_t max_rows = lexer.remaining_bytes() / (2 * static_cast<size_t>(channels)) + 1;
+  const size_t reserve_rows = std::min(static_cast<size_t>(header.declared_frames), max_rows);
+  clip.rotations.reserve(reserve_rows * samplers.size());
+  clip.translations.reserve(reserve_rows * samplers.size());
+
+  std::vector<double> row(channels);
+  int64_t frame = 0;
+  while (true) {
+    lexer.SkipWhitespace();  // line breaks and blank lines between rows
+    if (lexer.AtEnd()) break;
+    if (frame == INT_MAX) return lexer.ErrorAt(lexer.Here(), "more than " + std::to_string(INT_MAX) + " frames");
+    const char* p = lexer.cursor();
+    const RowEnd end = ScanRow(p, lexer.text_end(), row.data(), channels);
+    lexer.MoveWithinLine(p);
+    switch (end.kind) {
+      case RowEnd::kComplete:
+        break;
+      case RowEnd::kShort:
+        return RowEndsEarly(lexer, frame, end.values, channels, header);
+      case RowEnd::kBadValue:
+        return BadValue(lexer, frame);
+      case RowEnd::kLong:
+        return RowTooLong(lexer, frame, channels);
+    }
+    AppendFrame(samplers, row.data(), clip);
+    ++frame;
+  }
+  clip.num_frames = static_cast<int>(frame);
+  return OkStatus();
+}
+
+}  // namespace mocapfill::bvh

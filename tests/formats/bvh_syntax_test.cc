@@ -1,0 +1,201 @@
+// BVH syntax corners on small texts built from a real file's numbers (Boxing_Toes'
+// first joints): partial channel layouts, whitespace and line-ending variants, Frame Time
+// snapping, and the exact fast paths (numbers, Euler angles) against their references.
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <random>
+
+#include "formats/bvh/bvh_common.h"
+#include "formats/bvh/bvh_number.h"
+#include "formats/bvh/bvh_reader.h"
+#include "processing/core/rotation.h"
+
+namespace mocapfill {
+namespace {
+
+constexpr double kExactM = 1e-12;
+
+// Hips and Ab of Boxing_Toes.bvh with its first frame; `ab_channels` and `ab_values` vary.
+std::string TwoJoints(const std::string& ab_channels, const std::string& ab_values,
+                      const std::string& frame_time = "0.010000") {
+  return "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n"
+         "  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+         "  JOINT Ab\n  {\n    OFFSET -0.000000 8.268300 -0.000000\n    CHANNELS " +
+         ab_channels + "\n    End Site\n    {\n      OFFSET 0 17 0\n    }\n  }\n}\nMOTION\nFrames: 2\nFrame Time: " +
+         frame_time + "\n-6.101614 91.753342 50.165031 1.327254 -1.993820 179.842245 " + ab_values +
+         "\n-6.1 91.7 50.1 1.3 -1.9 179.8 " + ab_values + "\n";
+}
+
+Result<Scene> Read(const std::string& text, ImportOptions options = {}) {
+  options.unit = "cm";
+  return ReadBvh(text, "inline.bvh", options);
+}
+
+Eigen::Quaterniond Axis(int axis, double deg) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(deg * kRadPerDeg, Eigen::Vector3d::Unit(axis)));
+}
+
+TEST(BvhSyntax, PartialAndEmptyChannelLayouts) {
+  {
+    const Result<Scene> s = Read(TwoJoints("0", ""));
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    EXPECT_TRUE(s->skeleton.joint(1).bvh_channels.empty());
+    EXPECT_EQ(s->clips[0].rotation(0, 1).coeffs(), Eigen::Quaterniond::Identity().coeffs());
+    EXPECT_NEAR(s->clips[0].translation(0, 1).y(), 0.082683, kExactM);
+  }
+  {
+    const Result<Scene> s = Read(TwoJoints("1 Xrotation", "0.259081"));
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    EXPECT_LT(GeodesicAngle(s->clips[0].rotation(0, 1), Axis(0, 0.259081)), 1e-15);
+  }
+  {
+    // Y position only: X and Z stay at the OFFSET; the joint moves, so it is animated.
+    const Result<Scene> s = Read("HIERARCHY\nROOT Hips\n{\n OFFSET 1 2 3\n CHANNELS 2 Yposition Yrotation\n"
+                                 " End Site\n {\n  OFFSET 0 1 0\n }\n}\nMOTION\nFrames: 2\nFrame Time: 0.01\n"
+                                 "5 30\n6 -30\n");
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    EXPECT_NEAR(s->clips[0].translation(1, 0).x(), 0.01, kExactM);
+    EXPECT_NEAR(s->clips[0].translation(1, 0).y(), 0.06, kExactM);
+    EXPECT_NEAR(s->clips[0].translation(1, 0).z(), 0.03, kExactM);
+    EXPECT_TRUE(s->clips[0].translation_animated[0]);
+    EXPECT_LT(GeodesicAngle(s->clips[0].rotation(1, 0), Axis(1, -30)), 1e-15);
+  }
+}
+
+TEST(BvhSyntax, RotationIsIntrinsicInListedOrderForEveryPermutation) {
+  const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
+  const double angles[] = {-0.829542, 48.164647, -33.747334};
+  for (const char* order : orders) {
+    std::string channels = "3", values;
+    for (int i = 0; i < 3; ++i) {
+      channels += std::string(" ") + order[i] + "rotation";
+      values += std::to_string(angles[i]) + " ";
+    }
+    const Result<Scene> s = Read(TwoJoints(channels, values));
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    const Eigen::Quaterniond expected =
+        Axis(order[0] - 'X', angles[0]) * Axis(order[1] - 'X', angles[1]) * Axis(order[2] - 'X', angles[2]);
+    EXPECT_LT(GeodesicAngle(s->clips[0].rotation(0, 1), expected), 1e-14) << order;
+  }
+}
+
+TEST(BvhSyntax, WhitespaceAndLineEndingVariants) {
+  const std::string base = TwoJoints("3 Zrotation Xrotation Yrotation", "0.259081 -14.845615 0.399020");
+  const Result<Scene> reference = Read(base);
+  ASSERT_TRUE(reference.ok()) << reference.status().message();
+  auto replace_all = [](std::string s, const std::string& from, const std::string& to) {
+    for (size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) s.replace(p, from.size(), to);
+    return s;
+  };
+  const std::vector<std::string> variants = {
+      replace_all(base, "\n", "\r\n"),                       // CRLF
+      replace_all(base, "\n", "\r"),                         // old Mac CR
+      base.substr(0, base.size() - 1),                       // no final newline
+      replace_all(base, " ", "\t \t"),                       // tabs and runs of blanks
+      "\xEF\xBB\xBF" + base,                                 // UTF-8 byte order mark
+      replace_all(base, "Frame Time: 0.010000", "Frame Time:\t.010000"),
+      replace_all(replace_all(base, "ROOT Hips\n{", "ROOT Hips {"), "JOINT Ab\n  {", "JOINT Ab {"),
+      base + "\n\n   \n",                                  // trailing blank lines
+      replace_all(base, "End Site", "End site"),
+  };
+  for (size_t v = 0; v < variants.size(); ++v) {
+    const Result<Scene> s = Read(variants[v]);
+    ASSERT_TRUE(s.ok()) << "variant " << v << ": " << s.status().message();
+    ASSERT_EQ(s->clips[0].num_frames, 2) << v;
+    EXPECT_EQ(s->skeleton.name(1), "Ab") << v;
+    EXPECT_EQ(s->clips[0].sample_rate_hz, 100.0) << v;
+    for (int f = 0; f < 2; ++f)
+      for (int j = 0; j < 2; ++j) {
+        EXPECT_EQ(s->clips[0].rotation(f, j).coeffs(), reference->clips[0].rotation(f, j).coeffs()) << v;
+        EXPECT_EQ(s->clips[0].translation(f, j), reference->clips[0].translation(f, j)) << v;
+      }
+  }
+}
+
+TEST(BvhSyntax, FrameTimeSnapsToRationalRates) {
+  const std::pair<const char*, double> cases[] = {
+      {"0.0333333", 30.0},          {".0083333", 120.0},         {"0.010000", 100.0},        {"0.0416667", 24.0},
+      {"0.04", 25.0},               {"0.0166667", 60.0},         {"0.0333667", 30000.0 / 1001},
+      {"0.0417083", 24000.0 / 1001}, {"0.0166833", 60000.0 / 1001}, {"0.3", 1.0 / 0.3},
+      {"0.0123", 1.0 / 0.0123},
+  };
+  for (const auto& [text, rate] : cases) {
+    const Result<Scene> s = Read(TwoJoints("0", "", text));
+    ASSERT_TRUE(s.ok()) << text << ": " << s.status().message();
+    EXPECT_EQ(s->clips[0].sample_rate_hz, rate) << text;
+    EXPECT_EQ(s->source.source_frame_time_text, text);
+  }
+}
+
+TEST(BvhSyntax, FrameTimeTextReadsBackAsTheSameRate) {
+  for (double rate : {24.0, 25.0, 30.0, 50.0, 60.0, 100.0, 120.0, 240.0, 30000.0 / 1001, 24000.0 / 1001,
+                      60000.0 / 1001, 1.0 / 0.3, 37.3, 7.0, 1.0, 0.5, 1000.0, 13.37}) {
+    const std::string text = bvh::FormatFrameTime(rate);
+    double frame_time = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), frame_time);
+    EXPECT_EQ(bvh::SnapFrameRate(frame_time), rate) << rate << " -> " << text;
+  }
+  EXPECT_EQ(bvh::FormatFrameTime(30.0), "0.0333333333");
+}
+
+TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
+  std::mt19937_64 rng(42);
+  const std::vector<std::string> fixed = {"0", "-0", "1", "-17.3198", ".5", "5.", "+2.5", "0.0000001234",
+                                          "123456789012345678", "9007199254740993", "0.30000000000000004",
+                                          "179.842245", "-0.000000", "1e5", "12345.678901234567890"};
+  std::vector<std::string> samples = fixed;
+  for (int n = 0; n < 200000; ++n) {
+    const int integer_digits = static_cast<int>(rng() % 6);
+    const int fraction_digits = static_cast<int>(rng() % 12);
+    std::string s = (rng() % 2) ? "-" : "";
+    for (int i = 0; i < integer_digits; ++i) s += static_cast<char>('0' + rng() % 10);
+    if (fraction_digits > 0 || integer_digits == 0) s += '.';
+    for (int i = 0; i < fraction_digits; ++i) s += static_cast<char>('0' + rng() % 10);
+    samples.push_back(s);
+  }
+  int fast = 0;
+  for (const std::string& s : samples) {
+    const std::string padded = s + " 7";  // the parser must stop at the blank
+    double expected = 0.0, got = -1.0;
+    const char* begin = s.data() + (s[0] == '+' ? 1 : 0);
+    const auto ref = std::from_chars(begin, s.data() + s.size(), expected);
+    const char* end = bvh::ParseNumber(padded.data(), padded.data() + padded.size(), got);
+    if (ref.ec != std::errc() || ref.ptr != s.data() + s.size()) {
+      EXPECT_EQ(end, nullptr) << s;
+      continue;
+    }
+    ASSERT_EQ(end, padded.data() + s.size()) << s;
+    EXPECT_EQ(got, expected) << s;
+    EXPECT_EQ(std::signbit(got), std::signbit(expected)) << s;
+    if (bvh::ParsePlainDecimal(padded.data(), padded.data() + padded.size(), got)) ++fast;
+  }
+  EXPECT_GT(fast, 150000);  // the fast path, not from_chars, handled the typical values
+  double v = 0.0;
+  for (const char* bad : {"-", "+", ".", "1.2.3", "--1", "+-1", "1e", "abc", "1x"}) {
+    const std::string s = bad;
+    EXPECT_EQ(bvh::ParseNumber(s.data(), s.data() + s.size(), v), nullptr) << s;
+  }
+}
+
+TEST(BvhSyntax, FastEulerCompositionEqualsTheReference) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-1000.0, 1000.0);
+  const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
+  for (const char* name : orders) {
+    const EulerOrder order = *EulerOrder::Parse(name);
+    for (int n = 0; n < 20000; ++n) {
+      std::array<double, 3> a{angle(rng), angle(rng), angle(rng)};
+      if (n % 7 == 0) a[n % 3] = 0.0;
+      if (n % 11 == 0) a[(n + 1) % 3] = 90.0 * static_cast<int>(a[0] / 90.0);  // exact quarter turns
+      const Eigen::Quaterniond fast = bvh::ComposeEulerDegrees(a, order);
+      const Eigen::Quaterniond reference = EulerDegreesToQuaternion(a, order);
+      const double sign = fast.coeffs().dot(reference.coeffs()) < 0 ? -1.0 : 1.0;
+      EXPECT_LT((fast.coeffs() - sign * reference.coeffs()).cwiseAbs().maxCoeff(), 1e-14) << name;
+      EXPECT_NEAR(fast.norm(), 1.0, 1e-15);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mocapfill

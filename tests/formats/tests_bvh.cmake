@@ -1,0 +1,7 @@
+# BVH importer and exporter: fixtures under fixtures/bvh and fixtures/bad, corpus tests
+# over ../shared/data (skipped visibly when absent).
+mocapfill_add_test(bvh_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_test_support.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bvh_reader_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bvh_syntax_test.cc
+  LIBS mocapfill_bvh)
