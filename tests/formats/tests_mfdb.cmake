@@ -1,0 +1,7 @@
+# .mfdb database files, motion folder labels and SVG plots (issue #3).
+mocapfill_add_test(mfdb_tests
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/mfdb_file_test.cc
+    ${CMAKE_CURRENT_LIST_DIR}/motion_folder_test.cc
+    ${CMAKE_CURRENT_LIST_DIR}/svg_plot_test.cc
+  LIBS mocapfill_mfdb mocapfill_plot)
