@@ -1,0 +1,80 @@
+// Leave-one-out evaluation protocol (algorithms.md 9.1): clips are grouped into folds by a
+// label (leave-one-style-out: --loso style); for each fold a database is built from the
+// other folds' clips, every clip of the fold is reduced to a sketch, filled by each method
+// and scored against itself. Locomotion and gestures are summarised separately.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "processing/core/motion_clip.h"
+#include "processing/core/skeleton.h"
+#include "processing/core/status.h"
+#include "processing/database/motion_database.h"
+#include "processing/evaluation/metrics.h"
+#include "processing/evaluation/sketch_maker.h"
+#include "processing/synthesis/fill_options.h"
+
+namespace mocapfill {
+
+struct LabeledClip {
+  Skeleton skeleton;
+  MotionClip clip;   // every frame keyed (ground truth)
+  ClipLabels labels;  // "content", "style", ...
+};
+
+struct NamedMethod {
+  std::string name;
+  FillOptions options;
+};
+
+struct EvaluationOptions {
+  std::string fold_label = "style";  // clips sharing this label's value form one fold
+  SketchSpec sketch;
+  std::vector<NamedMethod> methods;
+  // Contents reported as locomotion; every other content is a gesture.
+  std::vector<std::string> locomotion_contents = {"walk", "walk-back", "walk-left", "walk-right", "run", "dash"};
+  std::vector<std::string> only_folds;      // empty = every fold
+  std::vector<std::string> only_contents;   // empty = every content is tested
+  DatabaseOptions database;
+  // Called after every scored clip (may be empty): done, total.
+  std::function<void(int, int)> on_clip_done;
+
+  Status Validate() const;
+};
+
+struct ClipScore {
+  std::string clip;
+  std::string fold;
+  std::string category;  // "locomotion" or "gestures"
+  std::string method;
+  FillMetrics metrics;
+  double fill_seconds = 0.0;
+  double seconds_per_s = 0.0;  // fill time per second of animation
+};
+
+struct SummaryRow {
+  std::string method;
+  std::string category;  // "locomotion", "gestures", "all"
+  int clips = 0;
+  FillMetrics mean;      // every metric averaged over clips
+  double fill_seconds = 0.0;
+  double seconds_per_s = 0.0;
+};
+
+struct EvaluationResult {
+  std::vector<ClipScore> scores;
+  std::vector<SummaryRow> summary;  // per method: locomotion, gestures, all
+  int folds = 0;
+};
+
+// Runs the protocol. Every clip must have the first clip's skeleton (joint names and parents)
+// and its rate. Errors: invalid options, clips without the fold label, a method failing.
+Result<EvaluationResult> RunLeaveOneOut(const std::vector<LabeledClip>& clips, const EvaluationOptions& options);
+
+// Averages of `scores` per (method, category) in method order, plus an "all" row per method.
+std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const std::vector<NamedMethod>& methods);
+
+}  // namespace mocapfill
