@@ -13,6 +13,9 @@ namespace {
 constexpr double kStaticComponentToleranceM = 1e-12;
 // An Euler angle about an axis the layout does not list must stay this close to zero.
 constexpr double kUnlistedAngleToleranceDeg = 1e-8;
+// How much closer (sum of the three angle changes) the non-principal Euler solution must
+// be before the writer leaves the principal branch.
+constexpr double kBranchSwitchMarginDeg = 90.0;
 
 Result<std::vector<Channel>> SourceChannels(const Joint& joint) {
   std::vector<Channel> channels;
@@ -39,10 +42,29 @@ bool ComponentVaries(const MotionClip& clip, int joint, int axis) {
   return false;
 }
 
+double Distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+}
+
+// Euler angles nearest the previous frame's (no 360-degree jumps), but on the principal
+// branch (middle angle within +-90, what BVH exporters write) unless leaving it saves more
+// than kBranchSwitchMarginDeg: a gimbal-lock crossing does (the principal branch would
+// turn two channels by 180 degrees), a jump between unrelated poses does not, so a file's
+// own numbers come back after a round trip.
+std::array<double, 3> ContinuousEuler(const Eigen::Quaterniond& q, const EulerOrder& order,
+                                      const std::array<double, 3>& previous) {
+  const std::array<double, 3> nearest = QuaternionToEulerDegrees(q, order, &previous);
+  if (std::cos(nearest[1] * kRadPerDeg) >= 0.0) return nearest;
+  std::array<double, 3> principal = QuaternionToEulerDegrees(q, order);
+  for (int i = 0; i < 3; ++i) principal[i] += 360.0 * std::round((previous[i] - principal[i]) / 360.0);
+  return Distance(principal, previous) <= Distance(nearest, previous) + kBranchSwitchMarginDeg ? principal : nearest;
+}
+
 std::vector<std::array<double, 3>> EulerTrack(const MotionClip& clip, int joint, const EulerOrder& order) {
   std::vector<std::array<double, 3>> angles(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f)
-    angles[f] = QuaternionToEulerDegrees(clip.rotation(f, joint), order, f > 0 ? &angles[f - 1] : nullptr);
+    angles[f] = f == 0 ? QuaternionToEulerDegrees(clip.rotation(f, joint), order)
+                       : ContinuousEuler(clip.rotation(f, joint), order, angles[f - 1]);
   return angles;
 }
 

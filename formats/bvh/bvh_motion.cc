@@ -105,9 +105,11 @@ std::string FrameCounts(int64_t frame, const MotionHeader& header) {
   const auto [ptr, ec] = std::from_chars(begin, rest.data() + length, value);
   const bool non_finite = ec == std::errc() && ptr == rest.data() + length;
   const bool out_of_range = ec == std::errc::result_out_of_range;
-  const std::string what = non_finite ? "expected a finite number" : out_of_range ? "number out of range" : "expected a number";
-  return lexer.ErrorAt(lexer.Here(), what + ", got " + lexer.QuoteTokenAt(lexer.position()) + " in frame " +
-                                         std::to_string(frame));
+  const std::string token = lexer.QuoteTokenAt(lexer.position());
+  const std::string where = " in frame " + std::to_string(frame);
+  if (out_of_range) return lexer.ErrorAt(lexer.Here(), "number " + token + " is out of range" + where);
+  return lexer.ErrorAt(lexer.Here(), (non_finite ? "expected a finite number, got " : "expected a number, got ") +
+                                         token + where);
 }
 
 [[gnu::cold]] Status RowTooLong(const BvhLexer& lexer, int64_t frame, int expected) {

@@ -4,4 +4,7 @@ mocapfill_add_test(bvh_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_test_support.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_reader_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_syntax_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bvh_bad_input_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bvh_writer_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bvh_corpus_test.cc
   LIBS mocapfill_bvh)
