@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <climits>
+#include <cstddef>
 #include <vector>
 
 #include "formats/bvh/bvh_number.h"
@@ -12,6 +13,10 @@
 namespace mocapfill::bvh {
 
 namespace {
+
+// Upper bound on frames x joints (about 6 GB of transforms): a tiny hierarchy with many
+// joints but few channels could otherwise make a small file expand without limit.
+constexpr size_t kMaxJointFrames = size_t{100'000'000};
 
 // Where one joint's values sit in a motion row (absolute indices, -1 when absent).
 struct JointSampler {
@@ -164,7 +169,8 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   // Reserve for the declared frames, but never more than the rest of the file can hold
   // (every value takes at least two bytes), so "Frames: 1000000000" cannot exhaust memory.
   const size_t max_rows = lexer.remaining_bytes() / (2 * static_cast<size_t>(channels)) + 1;
-  const size_t reserve_rows = std::min(static_cast<size_t>(header.declared_frames), max_rows);
+  const size_t reserve_rows =
+      std::min({static_cast<size_t>(header.declared_frames), max_rows, kMaxJointFrames / samplers.size()});
   clip.rotations.reserve(reserve_rows * samplers.size());
   clip.translations.reserve(reserve_rows * samplers.size());
 
@@ -173,7 +179,9 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   while (true) {
     lexer.SkipWhitespace();  // line breaks and blank lines between rows
     if (lexer.AtEnd()) break;
-    if (frame == INT_MAX) return lexer.ErrorAt(lexer.Here(), "more than " + std::to_string(INT_MAX) + " frames");
+    if (static_cast<size_t>(frame + 1) * samplers.size() > kMaxJointFrames)
+      return lexer.ErrorAt(lexer.Here(), "the motion is too large: more than " + std::to_string(frame) +
+                                             " frames of " + std::to_string(samplers.size()) + " joints");
     const char* p = lexer.cursor();
     const RowEnd end = ScanRow(p, lexer.text_end(), row.data(), channels);
     lexer.MoveWithinLine(p);

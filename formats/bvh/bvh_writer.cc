@@ -183,8 +183,11 @@ Result<std::string> WriteBvh(const Scene& scene, const ExportOptions& options) {
   if (scene.clips.empty()) rest_pose = MotionClip::RestPose(skeleton, 1, 30.0);
   const MotionClip& clip = scene.clips.empty() ? rest_pose : scene.clips.front();
   RETURN_IF_ERROR(clip.Validate(skeleton));
-  ASSIGN_OR_RETURN(std::vector<bvh::JointExportPlan> plans,
-                   bvh::PlanBvhExport(skeleton, clip, scene.source.format == "bvh"));
+  // A skeleton that came from BVH (directly, or through glTF extras) keeps every joint's
+  // layout, including joints that had no channels; others get the default layout.
+  bool bvh_layouts = scene.source.format == "bvh";
+  for (const Joint& joint : skeleton.joints()) bvh_layouts = bvh_layouts || !joint.bvh_channels.empty();
+  ASSIGN_OR_RETURN(std::vector<bvh::JointExportPlan> plans, bvh::PlanBvhExport(skeleton, clip, bvh_layouts));
   size_t channels = 0;
   for (const auto& plan : plans) channels += plan.layout.channels.size();
   if (channels == 0) {
