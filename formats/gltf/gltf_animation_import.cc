@@ -58,6 +58,10 @@ Result<KeyTrack> ReadSampler(const tinygltf::Model& model, const tinygltf::Anima
   ASSIGN_OR_RETURN(track.times_s, ReadKeyTimes(model, sampler.input, field + ".input"));
   Result<AccessorData> output = ReadAccessor(model, sampler.output);
   if (!output.ok()) return output.status().WithContext(field + ".output");
+  // Rotations may be stored as normalised integers; everything else must be FLOAT.
+  if (output->component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !(path == Path::kRotation && output->normalized))
+    return InvalidData(field + ".output: accessor " + Str(sampler.output) +
+                       " must be FLOAT (or normalised integers for rotations)");
   track.components = path == Path::kRotation ? 4 : 3;
   const size_t per_key = track.interpolation == Interpolation::kCubicSpline ? 3 : 1;
   const size_t keys = track.times_s.size();

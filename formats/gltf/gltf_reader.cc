@@ -23,6 +23,9 @@ namespace {
 using gltf_internal::AnimationRequest;
 using gltf_internal::RecordedClip;
 
+// More keyed frames than a clip may have samples: the extras are damaged, not a clip.
+constexpr size_t kMaxRecordedKeys = 20'000'000;
+
 // Extensions whose data our accessor reader handles without special code.
 constexpr std::string_view kSupportedRequiredExtensions[] = {"KHR_mesh_quantization"};
 
@@ -99,7 +102,7 @@ bool ReadFrameRanges(const tinygltf::Value& value, std::vector<int>& frames) {
     const tinygltf::Value& range = value.Get(static_cast<int>(k));
     if (range.ArrayLen() != 2 || !range.Get(0).IsNumber() || !range.Get(1).IsNumber()) return false;
     const int first = range.Get(0).GetNumberAsInt(), last = range.Get(1).GetNumberAsInt();
-    if (first < 0 || last < first || last - first > 10'000'000) return false;
+    if (first < 0 || last < first || frames.size() + (last - first) > kMaxRecordedKeys) return false;
     for (int f = first; f <= last; ++f) frames.push_back(f);
   }
   return true;

@@ -119,6 +119,37 @@ TEST_F(GltfBadEdit, MissingExternalBuffer) {
                 "buffers[0]: cannot read 'missing.bin'");
 }
 
+TEST_F(GltfBadEdit, ExternalBufferIsResolvedNextToTheFile) {
+  // Move the embedded bytes to base.bin beside the file: the import reads them from there.
+  const size_t start = text_.find("\"uri\": \"");
+  const size_t end = text_.find('"', start + 8);
+  const std::string uri = text_.substr(start + 8, end - start - 8);
+  const std::string payload = uri.substr(uri.find(',') + 1);
+  // Decode with the reader itself: a .gltf whose buffer is external must give the same clip.
+  Result<Scene> embedded = testing::ReadGltfFile(dir_ + "/base.gltf");
+  ASSERT_TRUE(embedded.ok()) << embedded.status().message();
+  static const std::string kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string bytes;
+  int bits = 0, value = 0;
+  for (char c : payload) {
+    if (c == '=') break;
+    value = value << 6 | static_cast<int>(kAlphabet.find(c));
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      bytes += static_cast<char>((value >> bits) & 0xFF);
+    }
+  }
+  ASSERT_TRUE(WriteFileAtomic(dir_ + "/base.bin", bytes).ok());
+  EXPECT_TRUE(Import(uri, "base.bin").ok());
+  Result<Scene> external = testing::ReadGltfFile(dir_ + "/edited.gltf");
+  ASSERT_TRUE(external.ok()) << external.status().message();
+  EXPECT_EQ(external->clips[0].rotations, embedded->clips[0].rotations);
+  // A .bin shorter than byteLength is named with both sizes.
+  ASSERT_TRUE(WriteFileAtomic(dir_ + "/base.bin", bytes.substr(0, 20)).ok());
+  ExpectInvalid(Import(uri, "base.bin"), "buffers[0]: byteLength 40 but 'base.bin' has 20 bytes");
+}
+
 TEST_F(GltfBadEdit, NotJson) { ExpectInvalid(Import("\"asset\"", "asset"), "JSON: "); }
 
 TEST(GltfBadInput, EveryTruncationOfAValidGlbFailsCleanly) {

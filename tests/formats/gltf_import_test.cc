@@ -257,6 +257,22 @@ TEST(GltfImport, OffGridKeysFallBackToThirtyHertzWithAWarning) {
   EXPECT_EQ(testing::ReadGltfFile(path, strict).status().code(), ErrorCode::kInvalidData);
 }
 
+TEST(GltfImport, ScaleAnimationIsIgnoredWithAWarning) {
+  Sketch s;
+  const int hips = s.file.AddNode("Hips", -1);
+  const int arm = s.file.AddNode("Arm", hips, {0.2, 0.4, 0});
+  s.file.AddChannel("grow", arm, "rotation", s.times, s.arm);
+  s.file.AddChannel("grow", hips, "scale", s.times, {1, 1, 1, 1, 1, 1, 1, 1, 1});
+  s.file.AddChannel("grow", arm, "scale", s.times, {1, 1, 1, 2, 2, 2, 1, 1, 1});
+  const std::string path = testing::GltfOutputPath("sketch_scale.gltf");
+  ASSERT_TRUE(s.file.Write(path));
+  Result<Scene> scene = testing::ReadGltfFile(path);
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  ASSERT_EQ(scene->warnings.size(), 1u);  // the unit scale on Hips is not worth a warning
+  EXPECT_NE(scene->warnings[0].find("scale animation of joint 'Arm' ignored"), std::string::npos);
+  EXPECT_EQ(scene->skeleton.joint(1).rest_scale, Eigen::Vector3d::Ones());
+}
+
 TEST(GltfImport, DuplicateAndMissingNamesBecomeUnique) {
   Sketch s;
   const int root = s.file.AddNode("Bone", -1);

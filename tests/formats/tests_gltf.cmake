@@ -1,9 +1,21 @@
 # glTF reader/writer tests. Every glTF they write goes to <build>/test-output/gltf, which
-# tools/test.sh validates afterwards with the Khronos glTF-Validator.
+# tools/test.sh validates afterwards with the Khronos glTF-Validator. The BVH reader
+# provides real motion (fixtures/bvh) for round trips.
+#
+# libdraco (pulled in by Assimp) exports an older tinygltf under the same symbol names.
+# It is linked first here, the worst case, so that gltf_linking_test.cc and every reader
+# test prove that mocapfill_gltf still binds its tinygltf calls to libtinygltf.
+set(MOCAPFILL_GLTF_TEST_DRACO "")
+if(TARGET draco::draco)
+  set(MOCAPFILL_GLTF_TEST_DRACO draco::draco)
+endif()
 mocapfill_add_test(gltf_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/gltf_test_support.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_roundtrip_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_import_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_bad_input_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_keyframes_test.cc
-  LIBS mocapfill_gltf mocapfill_format_common TinyGLTF::TinyGLTF nlohmann_json::nlohmann_json)
+          ${CMAKE_CURRENT_LIST_DIR}/gltf_bvh_fixture_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/gltf_linking_test.cc
+  LIBS ${MOCAPFILL_GLTF_TEST_DRACO} mocapfill_gltf mocapfill_format_common mocapfill_bvh
+       nlohmann_json::nlohmann_json TinyGLTF::TinyGLTF)
