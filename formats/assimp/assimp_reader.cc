@@ -99,7 +99,7 @@ Result<std::vector<int>> SelectAnimations(const aiScene& scene, const std::strin
   if (wanted.empty()) return all;
   for (int a = 0; a < count; ++a)
     if (wanted == scene.mAnimations[a]->mName.C_Str()) return std::vector<int>{a};
-  if (!wanted.empty() && wanted.find_first_not_of("0123456789") == std::string::npos && wanted.size() < 10) {
+  if (wanted.find_first_not_of("0123456789") == std::string::npos && wanted.size() < 10) {
     const int index = std::stoi(wanted);
     if (index < count) return std::vector<int>{index};
   }

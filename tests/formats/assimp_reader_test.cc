@@ -284,6 +284,32 @@ TEST(AssimpFbxPivots, PivotHelpersAreFoldedIntoTheJointAndItsAnimation) {
   }
 }
 
+// The same file with its GlobalSettings edited: Z up and metres (UnitScaleFactor 100).
+TEST(AssimpFbxPivots, UpAxisAndUnitComeFromTheGlobalSettings) {
+  std::ifstream in(testing::FixturePath("fbx/pivot_chain.fbx"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto replace = [&text](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace(R"(P: "UpAxis", "int", "Integer", "",1)", R"(P: "UpAxis", "int", "Integer", "",2)");
+  replace(R"(P: "UnitScaleFactor", "double", "Number", "",1)", R"(P: "UnitScaleFactor", "double", "Number", "",100)");
+  const std::string path = testing::ScratchDir("assimp_global_settings") + "/z_up_metres.fbx";
+  std::ofstream(path) << text;
+  const Result<Scene> scene = ReadWithAssimp(path, {});
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  EXPECT_EQ(scene->source.up_axis, "z");
+  EXPECT_EQ(scene->source.unit_name, "m");
+  EXPECT_DOUBLE_EQ(scene->source.unit_scale_to_m, 1.0);
+  // Hips rests at (10, 110, 0) file units = metres; Z up (x, y, z) becomes Y up (x, z, -y).
+  EXPECT_LT((scene->skeleton.joint(0).rest_translation - Eigen::Vector3d(10.0, 0.0, -110.0)).norm(), 1e-5)
+      << scene->skeleton.joint(0).rest_translation.transpose();  // Assimp keeps float matrices
+  WorldPose pose;
+  ComputeWorldPose(scene->skeleton, scene->clips.at(0), 24, pose);
+  EXPECT_LT((pose.positions[1] - Eigen::Vector3d(0.0, 10.0, -110.0)).norm(), 1e-5);  // Spine at (0, 110, 10)
+}
+
 // Other Assimp formats, from the shared corpus: the Khronos tutorial skins as Assimp reads
 // them (glTF is metres by definition, so no unit guessing).
 TEST(AssimpCorpus, SimpleSkinGltfThroughAssimp) {
