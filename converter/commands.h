@@ -12,5 +12,8 @@ using CommandAction = std::function<int()>;
 
 void AddConvertCommand(CLI::App& app, CommandAction& action);
 void AddInspectCommand(CLI::App& app, CommandAction& action);
+void AddDbCommand(CLI::App& app, CommandAction& action);
+void AddFilterCommand(CLI::App& app, CommandAction& action);
+void AddAnalyzeCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace mocapfill::cli

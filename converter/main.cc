@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
   CommandAction action;
   AddConvertCommand(app, action);
   AddInspectCommand(app, action);
+  AddDbCommand(app, action);
+  AddFilterCommand(app, action);
+  AddAnalyzeCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -218,8 +218,14 @@ Result<MotionDatabase> ReadDatabase(Source& source, std::uint64_t file_size) {
 
 std::string SerializeMfdb(const MotionDatabase& database) {
   const MotionDatabase::Parts& parts = database.parts();
-  std::string out(kHeaderSize, '\0');
   const std::string meta = mfdb::EncodeMeta(parts);
+  size_t total = kHeaderSize + 5 * (kSectionHeaderSize + kAlign) + meta.size() +
+                 sizeof(float) * (parts.signals.size() + parts.translations.size()) +
+                 parts.correlation.entries.size() * kCorrelationEntryBytes;
+  for (const StoredBand& band : parts.bands) total += kSectionHeaderSize + kAlign + sizeof(float) * band.values.size();
+  std::string out;
+  out.reserve(total);  // one allocation: the sections are tens of MB
+  out.resize(kHeaderSize, '\0');
   AppendSection(out, kMetaTag, meta.data(), meta.size());
   AppendSection(out, kSignalsTag, parts.signals.data(), sizeof(float) * parts.signals.size());
   AppendSection(out, kTranslationsTag, parts.translations.data(), sizeof(float) * parts.translations.size());

@@ -28,15 +28,21 @@ Eigen::MatrixXf Standardise(const Eigen::MatrixXf& signals) {
   return z;
 }
 
-// S(a, b) = sum over segments and t of z_a[t] * z_b[t + lag] / (number of pairs).
+// S(a, b) = sum over segments and t of z_a[t] * z_b[t + lag] / (number of pairs). One large
+// product over all rows (rows outside every segment are zero in z), minus the few pairs that
+// run from the end of one segment into the rows after it: much faster than a product per
+// segment, and exact.
 Eigen::MatrixXd LaggedCorrelation(const Eigen::MatrixXf& z, std::span<const FrameSegment> segments, int lag) {
+  const Eigen::Index n = z.rows();
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(z.cols(), z.cols());
+  if (lag >= n) return sum;
+  sum = (z.topRows(n - lag).transpose() * z.bottomRows(n - lag)).cast<double>();
   long pairs = 0;
   for (const FrameSegment& s : segments) {
-    const int n = s.num_rows - lag;
-    if (n <= 0) continue;
-    sum += (z.middleRows(s.first_row, n).transpose() * z.middleRows(s.first_row + lag, n)).cast<double>();
-    pairs += n;
+    pairs += std::max(0, s.num_rows - lag);
+    const int end = s.first_row + s.num_rows;
+    for (int t = std::max(s.first_row, end - lag); t < end && t + lag < n; ++t)
+      sum -= (z.row(t).transpose() * z.row(t + lag)).cast<double>();
   }
   if (pairs > 0) sum /= static_cast<double>(pairs);
   return sum;
@@ -59,7 +65,12 @@ Result<CorrelationTable> ComputeCorrelationTable(const Eigen::MatrixXf& signals,
   }
   if (!signals.allFinite()) return InvalidArgument("correlation: signals contain a non-finite value");
 
-  const Eigen::MatrixXf z = Standardise(signals);
+  Eigen::MatrixXf z = Standardise(signals);
+  // Rows outside every segment take no part in any pair.
+  std::vector<bool> covered(signals.rows(), false);
+  for (const FrameSegment& s : sorted) std::fill_n(covered.begin() + s.first_row, s.num_rows, true);
+  for (Eigen::Index r = 0; r < z.rows(); ++r)
+    if (!covered[r]) z.row(r).setZero();
   std::vector<Eigen::MatrixXd> by_lag(max_lag_frames + 1);
   // Lags are independent: each worker takes every `workers`-th lag.
   const int workers =

@@ -11,7 +11,9 @@ Status CheckMatrix(const Eigen::MatrixXf& m, Eigen::Index rows, Eigen::Index col
   if (m.rows() != rows || m.cols() != cols)
     return InvalidData(what + " is " + std::to_string(m.rows()) + " x " + std::to_string(m.cols()) + ", expected " +
                        std::to_string(rows) + " x " + std::to_string(cols));
-  if (!m.allFinite()) return InvalidData(what + " contains a non-finite value");
+  // One vectorised sum finds any NaN or infinity (they propagate); values are radians, metres
+  // and m/s, far from float overflow.
+  if (!std::isfinite(m.template cast<double>().sum())) return InvalidData(what + " contains a non-finite value");
   return OkStatus();
 }
 

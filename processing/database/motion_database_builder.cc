@@ -2,6 +2,7 @@
 // the correlation table in Build.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <set>
 #include <string>
 #include <thread>
@@ -81,23 +82,22 @@ void ProcessClip(const Skeleton& skeleton, const MotionClip& clip, const Tangent
                  ClipRange& range, BuildOutputs out) {
   const ClipSignals s = DecomposeClip(skeleton, clip, reference);
   const int frames = clip.num_frames;
-  Eigen::MatrixXd signals(frames, out.signals->cols());
-  signals << s.tangent, s.root_features;
-  out.signals->middleRows(first_row, frames) = signals.cast<float>();
+  Eigen::MatrixXf signals(frames, out.signals->cols());
+  signals << s.tangent.cast<float>(), s.root_features.cast<float>();
+  out.signals->middleRows(first_row, frames) = signals;
   for (size_t i = 0; i < translated.size(); ++i)
     for (int f = 0; f < frames; ++f)
       out.translations->block<1, 3>(first_row + f, 3 * i) = clip.translation(f, translated[i]).transpose().cast<float>();
   range.start_heading_rad = s.start_heading_rad;
   range.start_position_m = s.start_position_m;
   // Pyramids on the whole clip (ends clamped), so fragments cut later carry no edge effects
-  // of their own (algorithms.md 2c).
-  Eigen::MatrixXd g = std::move(signals);
+  // of their own (algorithms.md 2c). Float suffices: the bands are stored as float.
+  Eigen::MatrixXf g = std::move(signals);
   const int top = band_indices.empty() ? -1 : band_indices.back();
   for (int k = 0; k <= top; ++k) {
-    Eigen::MatrixXd next = SmoothLevel(g, k, PyramidBoundary::kClamp);
+    Eigen::MatrixXf next = SmoothLevel(g, k, PyramidBoundary::kClamp);
     const auto it = std::find(band_indices.begin(), band_indices.end(), k);
-    if (it != band_indices.end())
-      (*out.bands)[it - band_indices.begin()].middleRows(first_row, frames) = (g - next).cast<float>();
+    if (it != band_indices.end()) (*out.bands)[it - band_indices.begin()].middleRows(first_row, frames) = g - next;
     g = std::move(next);
   }
 }
@@ -130,10 +130,14 @@ Status MotionDatabaseBuilder::Add(const Skeleton& skeleton, MotionClip clip, Cli
     for (size_t d = 0; d < source_of.size(); ++d) identity = identity && source_of[d] == static_cast<int>(d);
     if (!identity) clip = ReorderJoints(clip, source_of);
   }
-  ResampleOptions resample;
-  resample.rate_hz = options_.rate_hz;
-  ASSIGN_OR_RETURN(MotionClip resampled, ResampleClip(clip, resample));
-  clips_.push_back(std::move(resampled));
+  if (std::abs(clip.sample_rate_hz - options_.rate_hz) <= 1e-9 * options_.rate_hz) {
+    clips_.push_back(std::move(clip));  // already at the working rate: no copy
+  } else {
+    ResampleOptions resample;
+    resample.rate_hz = options_.rate_hz;
+    ASSIGN_OR_RETURN(MotionClip resampled, ResampleClip(clip, resample));
+    clips_.push_back(std::move(resampled));
+  }
   labels_.push_back(std::move(labels));
   return OkStatus();
 }

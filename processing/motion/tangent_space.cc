@@ -8,26 +8,22 @@ namespace mocapfill {
 
 namespace {
 
-// Mean of the quaternions that `visit` hands to its callback (algorithms.md 1.2): two
-// passes of sign-aligned averaging, the second seeded with the first's result.
-template <typename Visit>
-Eigen::Quaterniond MeanOfVisited(const Visit& visit) {
-  Eigen::Quaterniond seed = Eigen::Quaterniond::Identity();
-  bool have_seed = false;
-  visit([&](const Eigen::Quaterniond& q) {
-    if (!have_seed) seed = q;
-    have_seed = true;
-  });
-  if (!have_seed) return Eigen::Quaterniond::Identity();
-  for (int pass = 0; pass < 2; ++pass) {
-    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-    visit([&](const Eigen::Quaterniond& q) {
-      sum += q.coeffs().dot(seed.coeffs()) < 0.0 ? Eigen::Vector4d(-q.coeffs()) : Eigen::Vector4d(q.coeffs());
-    });
-    if (sum.norm() < 1e-12) break;
-    seed.coeffs() = sum.normalized();
+// Sign-aligned component sums of unit quaternions, the building block of the mean
+// (algorithms.md 1.2): sign-align to a seed, sum, normalise; done twice, the second time
+// seeded with the first result.
+Eigen::Quaterniond NormalisedOrSeed(const Eigen::Vector4d& sum, const Eigen::Quaterniond& seed) {
+  if (sum.norm() < 1e-12) return seed;
+  Eigen::Quaterniond q;
+  q.coeffs() = sum.normalized();
+  return q;
+}
+
+void AccumulateAligned(const Eigen::Quaterniond& q, const Eigen::Quaterniond& seed, Eigen::Vector4d& sum) {
+  if (q.coeffs().dot(seed.coeffs()) < 0.0) {
+    sum -= q.coeffs();
+  } else {
+    sum += q.coeffs();
   }
-  return seed.normalized();
 }
 
 // World transform of joint j's parent at `frame` (identity for a root): the frame in which
@@ -38,12 +34,16 @@ struct ParentFrame {
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
 };
 
-ParentFrame ParentFrameOf(const Skeleton& skeleton, const MotionClip& clip, int frame, int joint) {
-  std::vector<int> chain;  // ancestors, nearest first
+// Ancestors of `joint`, root first.
+std::vector<int> AncestorChain(const Skeleton& skeleton, int joint) {
+  std::vector<int> chain;
   for (int p = skeleton.parent(joint); p != kNoParent; p = skeleton.parent(p)) chain.push_back(p);
+  return {chain.rbegin(), chain.rend()};
+}
+
+ParentFrame ParentFrameOf(const Skeleton& skeleton, const MotionClip& clip, int frame, const std::vector<int>& chain) {
   ParentFrame frame_out;
-  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-    const int a = *it;
+  for (int a : chain) {
     frame_out.position += frame_out.rotation * frame_out.scale.cwiseProduct(clip.translation(frame, a));
     frame_out.rotation = frame_out.rotation * clip.rotation(frame, a);
     frame_out.scale = skeleton.joint(a).rest_scale;
@@ -59,17 +59,38 @@ double WrapToPi(double angle) {
 }  // namespace
 
 int FindMotionRoot(const Skeleton& skeleton, std::span<const MotionClip* const> clips) {
-  for (int j = 0; j < skeleton.num_joints(); ++j)
+  auto translates = [&](int j) {
     for (const MotionClip* clip : clips)
-      if (j < static_cast<int>(clip->translation_animated.size()) && clip->translation_animated[j]) return j;
+      if (j < static_cast<int>(clip->translation_animated.size()) && clip->translation_animated[j]) return true;
+    return false;
+  };
+  // The pelvis: the first joint where the body branches (legs and spine). Its world motion
+  // includes every ancestor, so a static or translating "joint_Root" above it is covered.
+  int pelvis = -1;
+  for (int j = 0; j < skeleton.num_joints() && pelvis < 0; ++j)
+    if (skeleton.Children(j).size() >= 2) pelvis = j;
+  if (pelvis >= 0) {
+    std::vector<bool> above(skeleton.num_joints(), false);
+    for (int a = pelvis; a != kNoParent; a = skeleton.parent(a)) above[a] = true;
+    bool covered = true;
+    for (int j = 0; j < skeleton.num_joints(); ++j) covered = covered && (above[j] || !translates(j));
+    if (covered) return pelvis;
+  }
+  for (int j = 0; j < skeleton.num_joints(); ++j)
+    if (translates(j)) return j;
   const std::vector<int> roots = skeleton.Roots();
   return roots.empty() ? -1 : roots.front();
 }
 
 Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations) {
-  return MeanOfVisited([&](const auto& fn) {
-    for (const Eigen::Quaterniond& q : rotations) fn(q);
-  });
+  if (rotations.empty()) return Eigen::Quaterniond::Identity();
+  Eigen::Quaterniond seed = rotations.front();
+  for (int pass = 0; pass < 2; ++pass) {
+    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
+    for (const Eigen::Quaterniond& q : rotations) AccumulateAligned(q, seed, sum);
+    seed = NormalisedOrSeed(sum, seed);
+  }
+  return seed.normalized();
 }
 
 void SplitHeading(const Eigen::Quaterniond& world, double& heading_rad, Eigen::Quaterniond& tilt) {
@@ -89,16 +110,22 @@ Eigen::Quaterniond YawRotation(double angle_rad) {
 
 TangentReference ComputeTangentReference(const Skeleton& skeleton, std::span<const MotionClip* const> clips,
                                          int root_joint) {
+  const int joints = skeleton.num_joints();
   TangentReference reference;
   reference.root_joint = root_joint;
-  reference.joint_means.resize(skeleton.num_joints());
-  for (int j = 0; j < skeleton.num_joints(); ++j) {
-    if (j == root_joint) continue;
-    reference.joint_means[j] = MeanOfVisited([&](const auto& fn) {
-      for (const MotionClip* clip : clips)
-        for (int f = 0; f < clip->num_frames; ++f) fn(clip->rotation(f, j));
-    });
+  reference.joint_means.assign(joints, Eigen::Quaterniond::Identity());
+  if (clips.empty()) return reference;
+  // Frame-major passes over all joints at once (the clip's memory order).
+  std::vector<Eigen::Quaterniond> seeds(joints);
+  for (int j = 0; j < joints; ++j) seeds[j] = clips.front()->rotation(0, j);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<Eigen::Vector4d> sums(joints, Eigen::Vector4d::Zero());
+    for (const MotionClip* clip : clips)
+      for (int f = 0; f < clip->num_frames; ++f)
+        for (int j = 0; j < joints; ++j) AccumulateAligned(clip->rotation(f, j), seeds[j], sums[j]);
+    for (int j = 0; j < joints; ++j) seeds[j] = NormalisedOrSeed(sums[j], seeds[j]);
   }
+  for (int j = 0; j < joints; ++j) reference.joint_means[j] = seeds[j].normalized();
   if (root_joint >= 0) {
     std::vector<Eigen::Quaterniond> tilts;
     for (const MotionClip* clip : clips) {
@@ -118,8 +145,9 @@ RootTrajectory ExtractRootTrajectory(const Skeleton& skeleton, const MotionClip&
   const Eigen::Vector3d scale = skeleton.parent(root_joint) == kNoParent
                                     ? Eigen::Vector3d::Ones()
                                     : skeleton.joint(skeleton.parent(root_joint)).rest_scale;
+  const std::vector<int> chain = AncestorChain(skeleton, root_joint);
   for (int f = 0; f < clip.num_frames; ++f) {
-    const ParentFrame parent = ParentFrameOf(skeleton, clip, f, root_joint);
+    const ParentFrame parent = ParentFrameOf(skeleton, clip, f, chain);
     out.position_m[f] = parent.position + parent.rotation * scale.cwiseProduct(clip.translation(f, root_joint));
     double heading = 0.0;
     SplitHeading(parent.rotation * clip.rotation(f, root_joint), heading, out.tilt[f]);
@@ -228,10 +256,11 @@ Result<MotionClip> ComposeClip(const Skeleton& skeleton, const ClipSignals& sign
                                                             signals.start_heading_rad, signals.start_position_m);
     const Eigen::Vector3d scale =
         skeleton.parent(root) == kNoParent ? Eigen::Vector3d::Ones() : skeleton.joint(skeleton.parent(root)).rest_scale;
+    const std::vector<int> chain = AncestorChain(skeleton, root);
     for (int f = 0; f < like.num_frames; ++f) {
       const Eigen::Quaterniond world = YawRotation(trajectory.heading_rad[f]) * reference.joint_means[root] *
                                        ExpMap(signals.tangent.block<1, 3>(f, 3 * root).transpose());
-      const ParentFrame parent = ParentFrameOf(skeleton, out, f, root);
+      const ParentFrame parent = ParentFrameOf(skeleton, out, f, chain);
       out.rotation(f, root) = (parent.rotation.conjugate() * world).normalized();
       out.translation(f, root) =
           (parent.rotation.conjugate() * (trajectory.position_m[f] - parent.position)).cwiseQuotient(scale);

@@ -31,8 +31,11 @@ struct TangentReference {
   int root_joint = -1;  // motion root; -1 = no root split (every joint is a plain local tangent)
 };
 
-// The joint that carries the character's world motion: the first joint (index order) whose
-// translation is animated in any of `clips`; when none is, the first root of the skeleton.
+// The joint that carries the character's world motion. The pelvis, i.e. the first joint (index
+// order) with two or more children, when every joint whose translation is animated in any of
+// `clips` is the pelvis or one of its ancestors (Bandai-Namco: "Hips", even in the clips where
+// the static-looking "joint_Root" above it translates too); otherwise the first translating
+// joint; for a chain without branches where nothing translates, the first root.
 int FindMotionRoot(const Skeleton& skeleton, std::span<const MotionClip* const> clips);
 
 // Mean of unit quaternions (algorithms.md 1.2): sign-align every quaternion to a seed (the

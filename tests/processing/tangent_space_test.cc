@@ -43,9 +43,18 @@ TEST(TangentSpace, MotionRootIsTheFirstTranslatingJoint) {
   const MotionClip clip = WalkerClip(skeleton, {});
   const MotionClip* clips[] = {&clip};
   EXPECT_EQ(FindMotionRoot(skeleton, clips), 1);  // "Hips", not the static "Root"
-  const MotionClip still = MotionClip::RestPose(skeleton, 3, 30.0);
-  const MotionClip* still_clips[] = {&still};
-  EXPECT_EQ(FindMotionRoot(skeleton, still_clips), 0);
+  // Still the pelvis when the joint above it translates too (as in some Bandai-Namco clips).
+  MotionClip both = clip;
+  both.translation_animated[0] = 1;
+  const MotionClip* both_clips[] = {&clip, &both};
+  EXPECT_EQ(FindMotionRoot(skeleton, both_clips), 1);
+  // A translating joint below the pelvis wins over it (the pelvis does not carry it).
+  MotionClip leg = clip;
+  leg.translation_animated[4] = 1;
+  const MotionClip* leg_clips[] = {&leg};
+  EXPECT_EQ(FindMotionRoot(skeleton, leg_clips), 1);
+  leg.translation_animated[1] = 0;
+  EXPECT_EQ(FindMotionRoot(skeleton, leg_clips), 4);
 }
 
 TEST(TangentSpace, RootFeaturesOfAKnownPath) {

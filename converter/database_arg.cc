@@ -1,0 +1,77 @@
+#include "converter/database_arg.h"
+
+#include <nlohmann/json.hpp>
+
+#include "converter/console.h"
+#include "formats/file_io.h"
+#include "formats/mfdb/mfdb_file.h"
+#include "formats/mfdb/motion_folder.h"
+
+namespace mocapfill::cli {
+
+void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags) {
+  command.add_option("--rate", flags.rate_hz, "Working rate of the database in Hz (clips are resampled)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command.add_option("--map", flags.map_path,
+                     "Joint-name map, JSON {\"source name\": \"database name\"}, for clips whose joints are named differently");
+  command.add_option("--threads", flags.threads, "Import/build threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  // --unit and --up as in AddImportFlags; its --rate (keyed-input sampling) is left to
+  // detection here, because --rate names the database's working rate.
+  command.add_option("--unit", flags.import.unit, "Length unit of the inputs: auto, m, cm, mm, in, ft, cmu")
+      ->check(CLI::IsMember({"auto", "m", "cm", "mm", "in", "ft", "cmu"}))
+      ->capture_default_str();
+  command.add_option("--up", flags.import.up, "Up axis of the inputs: auto, y or z")
+      ->check(CLI::IsMember({"auto", "y", "z"}))
+      ->capture_default_str();
+}
+
+Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& path) {
+  ASSIGN_OR_RETURN(const std::string text, ReadFileBytes(path));
+  const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded() || !json.is_object())
+    return InvalidData(path + ": a joint-name map must be a JSON object {\"source name\": \"database name\"}");
+  std::map<std::string, std::string> map;
+  for (const auto& [key, value] : json.items()) {
+    if (!value.is_string()) return InvalidData(path + ": the value of \"" + key + "\" is not a string");
+    map[key] = value.get<std::string>();
+  }
+  return map;
+}
+
+Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& paths, const DatabaseBuildFlags& flags) {
+  ASSIGN_OR_RETURN(const std::vector<std::string> files, ListMotionFiles(paths));
+  DatabaseOptions options;
+  options.rate_hz = flags.rate_hz;
+  options.threads = flags.threads;
+  MotionDatabaseBuilder builder(options);
+  if (!flags.map_path.empty()) {
+    Result<std::map<std::string, std::string>> map = ReadJointNameMap(flags.map_path);
+    if (!map.ok()) return map.status();
+    builder.SetJointNameMap(std::move(map).value());
+  }
+  std::vector<LabeledScene> scenes;
+  {
+    Progress progress("importing", files.size());
+    ASSIGN_OR_RETURN(scenes, ImportMotionFiles(files, flags.import, flags.threads, [&] { progress.Advance(); }));
+  }
+  for (LabeledScene& s : scenes) {
+    const std::string& file = s.labels["file"];
+    for (MotionClip& clip : s.scene.clips) {
+      // One clip per file is the rule (BVH); files with several animations name each.
+      clip.name = s.scene.clips.size() == 1 ? s.labels["name"] : s.labels["name"] + ":" + clip.name;
+      RETURN_IF_ERROR(builder.Add(s.scene.skeleton, std::move(clip), s.labels).WithContext(file));
+    }
+    s.scene.clips.clear();  // the builder holds the frames now
+  }
+  return builder.Build();
+}
+
+bool IsDatabaseFile(const std::string& path) { return LowerExtension(path) == ".mfdb" || LooksLikeMfdb(path); }
+
+Result<MotionDatabase> LoadDatabaseArg(const std::string& path, const DatabaseBuildFlags& flags) {
+  if (IsDatabaseFile(path)) return ReadMfdb(path);
+  return BuildDatabaseFromPaths({path}, flags);
+}
+
+}  // namespace mocapfill::cli
