@@ -21,7 +21,7 @@ struct RunResult {
   std::string output;  // stdout and stderr together
 };
 
-RunResult Run(const std::string& args) {
+RunResult RunCli(const std::string& args) {
   RunResult result;
   const std::string command = testing::MocapfillExe() + " " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
@@ -50,30 +50,30 @@ std::string ReadAll(const std::string& path) {
 }
 
 TEST(Cli, VersionAndHelpForEveryVerb) {
-  RunResult version = Run("--version");
+  RunResult version = RunCli("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_NE(version.output.find("mocapfill "), std::string::npos);
   for (const char* verb : {"convert", "inspect"}) {
-    RunResult help = Run(std::string(verb) + " --help");
+    RunResult help = RunCli(std::string(verb) + " --help");
     EXPECT_EQ(help.exit_code, 0) << verb;
     EXPECT_NE(help.output.find("Examples:"), std::string::npos) << verb << ": " << help.output;
   }
-  EXPECT_NE(Run("--help").output.find("Exit codes"), std::string::npos);
+  EXPECT_NE(RunCli("--help").output.find("Exit codes"), std::string::npos);
 }
 
 TEST(Cli, UsageErrorsExitWithOne) {
-  EXPECT_EQ(Run("").exit_code, 1);
-  EXPECT_EQ(Run("frobnicate").exit_code, 1);
-  EXPECT_EQ(Run("convert").exit_code, 1);
-  EXPECT_EQ(Run("convert --unit parsec a.bvh b.glb").exit_code, 1);
+  EXPECT_EQ(RunCli("").exit_code, 1);
+  EXPECT_EQ(RunCli("frobnicate").exit_code, 1);
+  EXPECT_EQ(RunCli("convert").exit_code, 1);
+  EXPECT_EQ(RunCli("convert --unit parsec a.bvh b.glb").exit_code, 1);
   const std::string dir = testing::ScratchDir("cli_usage");
-  EXPECT_EQ(Run("convert " + Quote(FixtureBvhFiles().at(0)) + " " + Quote(dir + "/out.obj")).exit_code, 1);
+  EXPECT_EQ(RunCli("convert " + Quote(FixtureBvhFiles().at(0)) + " " + Quote(dir + "/out.obj")).exit_code, 1);
   EXPECT_FALSE(fs::exists(dir + "/out.obj"));
 }
 
 TEST(Cli, MissingInputExitsWithTwoAndWritesNothing) {
   const std::string dir = testing::ScratchDir("cli_missing");
-  RunResult r = Run("convert " + Quote(dir + "/nope.bvh") + " " + Quote(dir + "/out.glb"));
+  RunResult r = RunCli("convert " + Quote(dir + "/nope.bvh") + " " + Quote(dir + "/out.glb"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("nope.bvh"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir + "/out.glb"));
@@ -85,7 +85,7 @@ TEST(Cli, BadInputsExitWithTwoNameTheFileAndLeaveNoOutput) {
   for (const auto& entry : fs::directory_iterator(testing::FixturePath("bad"))) {
     const std::string in = entry.path().string();
     const std::string out = dir + "/" + entry.path().stem().string() + ".glb";
-    RunResult r = Run("convert " + Quote(in) + " " + Quote(out));
+    RunResult r = RunCli("convert " + Quote(in) + " " + Quote(out));
     EXPECT_EQ(r.exit_code, 2) << in << ": " << r.output;
     EXPECT_NE(r.output.find(entry.path().filename().string()), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
@@ -97,7 +97,7 @@ TEST(Cli, BadInputsExitWithTwoNameTheFileAndLeaveNoOutput) {
 }
 
 TEST(Cli, TruncatedBvhMessageNamesTheLine) {
-  RunResult r = Run("inspect " + Quote(testing::FixturePath("bad/truncated.bvh")));
+  RunResult r = RunCli("inspect " + Quote(testing::FixturePath("bad/truncated.bvh")));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("truncated.bvh:"), std::string::npos) << r.output;
 }
@@ -106,7 +106,7 @@ TEST(Cli, FailedConversionKeepsAnExistingOutputUntouched) {
   const std::string dir = testing::ScratchDir("cli_keep");
   const std::string out = dir + "/out.glb";
   { std::ofstream(out) << "previous content"; }
-  RunResult r = Run("convert " + Quote(testing::FixturePath("bad/truncated.bvh")) + " " + Quote(out));
+  RunResult r = RunCli("convert " + Quote(testing::FixturePath("bad/truncated.bvh")) + " " + Quote(out));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(ReadAll(out), "previous content");
 }
@@ -116,12 +116,12 @@ TEST(Cli, RefusesToOverwriteAnInput) {
   const std::string in = dir + "/clip.bvh";
   fs::copy_file(FixtureBvhFiles().at(0), in);
   const std::string before = ReadAll(in);
-  RunResult r = Run("convert " + Quote(in) + " " + Quote(in));
+  RunResult r = RunCli("convert " + Quote(in) + " " + Quote(in));
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(r.output.find("refusing to overwrite"), std::string::npos) << r.output;
   EXPECT_EQ(ReadAll(in), before);
   // The same file reached through another path is caught too.
-  RunResult r2 = Run("convert " + Quote(in) + " -o " + Quote(dir) + " --format bvh");
+  RunResult r2 = RunCli("convert " + Quote(in) + " -o " + Quote(dir) + " --format bvh");
   EXPECT_EQ(r2.exit_code, 4) << r2.output;
   EXPECT_EQ(ReadAll(in), before);
 }
@@ -130,8 +130,8 @@ TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
   const std::string dir = testing::TestOutputDir("cli_batch");
   std::string args = "convert";
   const auto inputs = FixtureBvhFiles();
-  for (const std::string& in : inputs) args += " " + Quote(in);
-  RunResult r = Run(args + " -o " + Quote(dir) + " -j 2");
+  for (const std::string& in : inputs) args.append(" ").append(Quote(in));
+  RunResult r = RunCli(args + " -o " + Quote(dir) + " -j 2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const std::string& in : inputs) {
     const std::string out = dir + "/" + fs::path(in).stem().string() + ".glb";
@@ -143,14 +143,14 @@ TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
 TEST(Cli, ConvertIsDeterministic) {
   const std::string dir = testing::ScratchDir("cli_determinism");
   const std::string in = FixtureBvhFiles().at(0);
-  ASSERT_EQ(Run("convert " + Quote(in) + " " + Quote(dir + "/a.glb")).exit_code, 0);
-  ASSERT_EQ(Run("convert " + Quote(in) + " " + Quote(dir + "/b.glb")).exit_code, 0);
+  ASSERT_EQ(RunCli("convert " + Quote(in) + " " + Quote(dir + "/a.glb")).exit_code, 0);
+  ASSERT_EQ(RunCli("convert " + Quote(in) + " " + Quote(dir + "/b.glb")).exit_code, 0);
   EXPECT_EQ(ReadAll(dir + "/a.glb"), ReadAll(dir + "/b.glb"));
 }
 
 TEST(Cli, InspectJsonDescribesTheClip) {
   for (const std::string& in : FixtureBvhFiles()) {
-    RunResult r = Run("inspect --json " + Quote(in));
+    RunResult r = RunCli("inspect --json " + Quote(in));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto json = nlohmann::json::parse(r.output);
     EXPECT_EQ(json["format"], "bvh");
