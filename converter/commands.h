@@ -15,5 +15,7 @@ void AddInspectCommand(CLI::App& app, CommandAction& action);
 void AddDbCommand(CLI::App& app, CommandAction& action);
 void AddFilterCommand(CLI::App& app, CommandAction& action);
 void AddAnalyzeCommand(CLI::App& app, CommandAction& action);
+void AddFillCommand(CLI::App& app, CommandAction& action);
+void AddEvalCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace mocapfill::cli

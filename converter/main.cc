@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   AddDbCommand(app, action);
   AddFilterCommand(app, action);
   AddAnalyzeCommand(app, action);
+  AddFillCommand(app, action);
+  AddEvalCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -112,13 +112,14 @@ void ScoreKeys(const Skeleton& skeleton, const MotionClip& sketch, const MotionC
   m.key_error_max_deg = worst;
 }
 
-double BoneLengthError(const Skeleton& skeleton, const Posed& truth, const Posed& filled, int frames) {
+double BoneLengthError(const Skeleton& skeleton, const MotionClip& clip, const Posed& truth, const Posed& filled,
+                       int frames) {
   const int nj = skeleton.num_joints();
   double sum = 0.0;
   long count = 0;
   for (int j = 0; j < nj; ++j) {
     const int p = skeleton.parent(j);
-    if (p == kNoParent) continue;
+    if (p == kNoParent || clip.translation_animated[j]) continue;  // root motion is not a bone
     for (int f = 0; f < frames; ++f) {
       const double lt = (truth.positions[f * nj + j] - truth.positions[f * nj + p]).norm();
       if (lt < 1e-9) continue;
@@ -204,7 +205,7 @@ Result<FillMetrics> ScoreFill(const Skeleton& skeleton, const MotionClip& truth,
   m.jitter_ratio = true_jerk > 0.0 ? MeanJerk(pf, body, frames, nj, rate) / true_jerk : 0.0;
   ScoreFeet(skeleton, pt, pf, feet, frames, rate, m);
   ScoreKeys(skeleton, sketch, filled, m);
-  m.bone_length_error = BoneLengthError(skeleton, pt, pf, frames);
+  m.bone_length_error = BoneLengthError(skeleton, truth, pt, pf, frames);
   return m;
 }
 

@@ -48,6 +48,10 @@ Result<MotionClip> MakeSketch(const Skeleton& skeleton, const MotionClip& truth,
   MotionClip sketch = MotionClip::RestPose(skeleton, truth.num_frames, truth.sample_rate_hz);
   sketch.name = truth.name + ".sketch";
   const std::vector<int> keys = SketchKeyFrames(truth.num_frames, spec.key_every_frames);
+  // Constant translations come from the capture (its offsets may differ from the rest pose).
+  for (int f = 0; f < truth.num_frames; ++f)
+    for (int j = 0; j < skeleton.num_joints(); ++j)
+      if (!truth.translation_animated[j]) sketch.translation(f, j) = truth.translation(f, j);
   for (int j = 0; j < skeleton.num_joints(); ++j) {
     if (!keep[j]) continue;
     const bool moves = truth.translation_animated[j] != 0;

@@ -26,8 +26,8 @@ std::vector<int> SketchKeyFrames(int num_frames, int every);
 
 // Keeps the listed joints at the key frames and drops every other joint: a kept joint's
 // rotation (and its translation when animated) is interpolated between its keys as a glTF
-// LINEAR sampler would import it (slerp, lerp); a dropped joint holds its rest transform and
-// has no keys. Errors: a listed joint the skeleton lacks, an empty clip (kInvalidArgument).
+// LINEAR sampler would import it (slerp, lerp); a dropped joint holds its rest rotation and
+// has no keys; constant translations are copied from the capture. Errors: a listed joint the skeleton lacks, an empty clip (kInvalidArgument).
 Result<MotionClip> MakeSketch(const Skeleton& skeleton, const MotionClip& truth, const SketchSpec& spec);
 
 }  // namespace mocapfill

@@ -20,9 +20,18 @@ std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int ble
   return set;
 }
 
-// Adds weight * (candidate's channels stretched onto sketch frames [from, to)) to out.
+// Cross-fade weight of sketch frame t for fragment f extended by `margin` frames per side:
+// 1 inside the fragment, falling linearly to 0 just beyond the margin.
+double FadeWeight(const SketchFragment& f, int margin, int t) {
+  const int outside = t < f.first ? f.first - t : t > f.last ? t - f.last : 0;
+  return 1.0 - double(outside) / (margin + 1);
+}
+
+// Adds weight * fade(t) * (candidate's channels stretched onto sketch frames [from, to)) to
+// acc (frames x channels.size()), and weight * fade(t) to weights.
 void AddStretched(const MotionDatabase& db, const DbFragment& g, const SketchFragment& f, int from, int to,
-                  const std::vector<int>& channels, double weight, Eigen::MatrixXd& out) {
+                  int margin, const std::vector<int>& channels, double weight, Eigen::MatrixXd& acc,
+                  Eigen::VectorXd& weights) {
   const ClipRange& clip = db.clip(g.clip);
   const Eigen::MatrixXf& s = db.signals();
   const int span = std::max(1, f.last - f.first);
@@ -30,9 +39,12 @@ void AddStretched(const MotionDatabase& db, const DbFragment& g, const SketchFra
     const double u = g.first + double(t - f.first) * (g.last - g.first) / span;
     const double uc = std::clamp(u, 0.0, double(clip.num_frames - 1));
     const int a = static_cast<int>(uc), b = std::min(a + 1, clip.num_frames - 1);
-    const double w = uc - a;
-    for (int c : channels)
-      out(t, c) += weight * ((1.0 - w) * s(clip.first_frame + a, c) + w * s(clip.first_frame + b, c));
+    const double w = uc - a, fw = weight * FadeWeight(f, margin, t);
+    for (size_t i = 0; i < channels.size(); ++i) {
+      const int c = channels[i];
+      acc(t, i) += fw * ((1.0 - w) * s(clip.first_frame + a, c) + w * s(clip.first_frame + b, c));
+    }
+    weights[t] += fw;
   }
 }
 
@@ -40,25 +52,33 @@ void AddStretched(const MotionDatabase& db, const DbFragment& g, const SketchFra
 
 std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& out) {
   const auto& frags = *in.fragments;
+  const int rows = static_cast<int>(out.rows());
   std::vector<int> blended(frags.size(), 0);
+  Eigen::MatrixXd acc = Eigen::MatrixXd::Zero(rows, in.channels.size());
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(rows);
   for (size_t i = 0; i < frags.size(); ++i) {
     const std::vector<Candidate>& cands = (*in.candidates)[i];
     if (cands.empty()) continue;
-    const int from = frags[i].first, to = i + 1 == frags.size() ? frags[i].last + 1 : frags[i].last;
-    for (int t = from; t < to; ++t)
-      for (int c : in.channels) out(t, c) = 0.0;
+    const int margin = static_cast<int>(std::lround(in.crossfade * (frags[i].last - frags[i].first)));
+    // Without cross-fading fragments own [first, last) (the last one its end frame too).
+    const int from = std::max(0, frags[i].first - margin);
+    const int to = margin > 0 ? std::min(rows, frags[i].last + margin + 1)
+                              : (i + 1 == frags.size() ? frags[i].last + 1 : frags[i].last);
     const std::vector<int> set = BlendSet(cands, in.leads[i], in.blend);
     double mean_d = 0.0;
     for (int c : set) mean_d += cands[c].distance;
     mean_d = std::max(1e-9, mean_d / set.size());
-    std::vector<double> weights;
+    std::vector<double> w;
     double total = 0.0;
-    for (int c : set) total += weights.emplace_back(std::exp(-cands[c].distance / mean_d));
+    for (int c : set) total += w.emplace_back(std::exp(-cands[c].distance / mean_d));
     for (size_t k = 0; k < set.size(); ++k)
-      AddStretched(*in.db, in.mdb->fragments()[cands[set[k]].fragment], frags[i], from, to, in.channels,
-                   weights[k] / total, out);
+      AddStretched(*in.db, in.mdb->fragments()[cands[set[k]].fragment], frags[i], from, to, margin, in.channels,
+                   w[k] / total, acc, weights);
     blended[i] = static_cast<int>(set.size());
   }
+  for (int t = 0; t < rows; ++t)
+    if (weights[t] > 0.0)
+      for (size_t i = 0; i < in.channels.size(); ++i) out(t, in.channels[i]) = acc(t, i) / weights[t];
   return blended;
 }
 

@@ -20,12 +20,16 @@ struct AssemblyInputs {
   std::vector<int> leads;        // joined candidate per fragment
   int blend = 1;                 // candidates averaged per fragment (the lead always among them)
   std::vector<int> channels;     // channels to write
+  double crossfade = 0.0;        // overlap beyond each fragment, share of its length per side
 };
 
-// Writes `channels` of every fragment's frames (half-open [first, last), the last fragment
-// inclusive) into `out` (frames x channels): the candidates' captured signals stretched
-// linearly to the fragment's length, averaged with weights exp(-d / mean d) over the lead and
-// the nearest others. Returns how many candidates each fragment blended.
+// Writes `channels` of every fragment's frames into `out` (frames x channels): the candidates'
+// captured signals stretched linearly to the fragment's length, averaged with weights
+// exp(-d / mean d) over the lead and the nearest others. Without cross-fade a fragment owns
+// [first, last) (the last one its end frame too); with it, each fragment's candidates extend
+// `crossfade` of its length beyond both ends (the takes continue there) and overlapping
+// fragments are mixed with linear fade weights, so there is no seam to smooth. Returns how
+// many candidates each fragment blended.
 std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& out);
 
 // Seam smoothing: at every fragment boundary b, each listed channel's jump beyond the expected

@@ -85,10 +85,13 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<Driven
   JoinInputs join{ctx.db, ctx.mdb, &r.candidates, targets, ctx.sigma, ctx.options->transition_gamma};
   r.leads = JoinCandidates(ctx.options->join, join);
   timer.Mark("join");
-  AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, targets};
+  AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, targets,
+                          ctx.options->crossfade};
   AssembleFragments(assembly, out);
-  const int window = static_cast<int>(std::lround(ctx.options->seam_window_s * ctx.db->rate_hz()));
-  SmoothSeams(out, targets, ctx.fragments, window);
+  if (ctx.options->crossfade <= 0.0) {
+    const int window = static_cast<int>(std::lround(ctx.options->seam_window_s * ctx.db->rate_hz()));
+    SmoothSeams(out, targets, ctx.fragments, window);
+  }
   timer.Mark("assemble");
   return r;
 }

@@ -27,6 +27,7 @@ Status FillOptions::Validate() const {
   if (!(max_length_ratio >= 1.0 && max_length_ratio <= 10.0))
     return RangeError("max_length_ratio", max_length_ratio, "[1, 10]");
   if (!(seam_window_s >= 0.0 && seam_window_s <= 5.0)) return RangeError("seam_window_s", seam_window_s, "[0, 5]");
+  if (!(crossfade >= 0.0 && crossfade <= 2.0)) return RangeError("crossfade", crossfade, "[0, 2]");
   if (!(transition_gamma >= 0.0 && std::isfinite(transition_gamma)))
     return RangeError("transition_gamma", transition_gamma, "[0, inf)");
   if (max_drivers < 0) return RangeError("max_drivers", max_drivers, "[0, inf)");

@@ -46,6 +46,7 @@ struct FillOptions {
   double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
   double max_length_ratio = 1.5;
   double seam_window_s = 0.25;     // seam smoothing reach on each side
+  double crossfade = 0.0;          // > 0: fragments overlap by this share of their length and are cross-faded
   double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
   int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
   double synthesized_driver_weight = 0.5;  // weight of already synthesised drivers (keyed = 1)

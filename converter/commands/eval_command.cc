@@ -1,0 +1,214 @@
+// mocapfill eval: the leave-one-out evaluation harness (issue #4): sketches made from ground
+// truth clips, filled by each method against a database without the clip's fold, scored,
+// printed as a table (or JSON).
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "converter/commands.h"
+#include "converter/console.h"
+#include "converter/exit_codes.h"
+#include "converter/fill_flags.h"
+#include "formats/mfdb/motion_folder.h"
+#include "formats/motion_io.h"
+#include "processing/motion/resample.h"
+#include "processing/evaluation/loso.h"
+
+namespace mocapfill::cli {
+
+namespace {
+
+struct EvalArgs {
+  std::vector<std::string> db;
+  std::string loso = "style";
+  std::string keep = "Hips,UpperLeg_L,LowerLeg_L,Foot_L,Toes_L,UpperLeg_R,LowerLeg_R,Foot_R,Toes_R";
+  int every = 8;
+  std::string methods = "mean,nn,fragment,hierarchical";
+  std::string folds, contents, save_sketches;
+  bool json = false;
+  FillOptions fill;
+  FillFlagText text;
+};
+
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
+  return {{"mpjpe_unkeyed_cm", m.mpjpe_unkeyed_cm},
+          {"mpjpe_keyed_between_cm", m.mpjpe_keyed_between_cm},
+          {"angle_unkeyed_deg", m.angle_unkeyed_deg},
+          {"npss", m.npss},
+          {"jitter_ratio", m.jitter_ratio},
+          {"foot_skate_cm_per_s", m.foot_skate_cm_per_s},
+          {"foot_skate_share", m.foot_skate_share},
+          {"key_error_mean_deg", m.key_error_mean_deg},
+          {"key_error_max_deg", m.key_error_max_deg},
+          {"bone_length_error", m.bone_length_error}};
+}
+
+void PrintJson(const EvaluationResult& r, const EvalArgs& args) {
+  nlohmann::ordered_json out;
+  out["protocol"] = {{"loso", args.loso}, {"keep", args.keep}, {"every", args.every}, {"folds", r.folds}};
+  nlohmann::ordered_json summary = nlohmann::ordered_json::array();
+  for (const SummaryRow& row : r.summary) {
+    nlohmann::ordered_json e = {{"method", row.method}, {"category", row.category}, {"clips", row.clips}};
+    e["metrics"] = MetricsJson(row.mean);
+    e["fill_seconds"] = row.fill_seconds;
+    e["seconds_per_second"] = row.seconds_per_s;
+    summary.push_back(e);
+  }
+  out["summary"] = summary;
+  nlohmann::ordered_json clips = nlohmann::ordered_json::array();
+  for (const ClipScore& s : r.scores)
+    clips.push_back({{"clip", s.clip}, {"fold", s.fold}, {"category", s.category}, {"method", s.method},
+                     {"metrics", MetricsJson(s.metrics)}, {"fill_seconds", s.fill_seconds}});
+  out["clips"] = clips;
+  std::printf("%s\n", out.dump(2).c_str());
+}
+
+void PrintTable(const EvaluationResult& r, const EvalArgs& args) {
+  std::printf("leave-one-%s-out: %d folds, keep %s every %d frames\n", args.loso.c_str(), r.folds, args.keep.c_str(),
+              args.every);
+  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %9s\n", "category", "method", "clips", "unkeyed",
+              "keyed-btw", "angle", "NPSS", "jitter", "skate", "skate%", "key-mean", "key-max", "ms/fill");
+  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %9s\n", "", "", "", "cm", "cm", "deg", "", "ratio",
+              "cm/s", "", "deg", "deg", "");
+  for (const char* category : {"locomotion", "gestures", "all"})
+    for (const SummaryRow& row : r.summary) {
+      if (row.category != category) continue;
+      const FillMetrics& m = row.mean;
+      std::printf("%-11s %-13s %5d %9.3f %9.3f %8.2f %7.4f %7.3f %8.2f %6.1f %8.4f %8.4f %9.1f\n", category,
+                  row.method.c_str(), row.clips, m.mpjpe_unkeyed_cm, m.mpjpe_keyed_between_cm, m.angle_unkeyed_deg,
+                  m.npss, m.jitter_ratio, m.foot_skate_cm_per_s, 100.0 * m.foot_skate_share, m.key_error_mean_deg,
+                  m.key_error_max_deg, 1000.0 * row.fill_seconds);
+    }
+}
+
+int Fail(const Status& status, Stage stage) {
+  PrintError(status.message());
+  return ExitCodeFor(status, stage);
+}
+
+Result<std::vector<LabeledClip>> LoadClips(const EvalArgs& args) {
+  ASSIGN_OR_RETURN(const std::vector<std::string> files, ListMotionFiles(args.db));
+  Progress progress("loading", files.size());
+  ASSIGN_OR_RETURN(std::vector<LabeledScene> scenes,
+                   ImportMotionFiles(files, ImportOptions{}, 0, [&progress] { progress.Advance(); }));
+  std::vector<LabeledClip> clips;
+  for (LabeledScene& s : scenes)
+    for (MotionClip& clip : s.scene.clips) clips.push_back({s.scene.skeleton, std::move(clip), s.labels});
+  return clips;
+}
+
+bool Selected(const std::vector<std::string>& list, const ClipLabels& labels, const std::string& key) {
+  const auto it = labels.find(key);
+  return list.empty() || (it != labels.end() && std::find(list.begin(), list.end(), it->second) != list.end());
+}
+
+// Writes every selected clip's sketch as <name>.sketch.glb (keys recorded) and as
+// <name>.sketch.bvh sampled at the key rate (a baked sketch: fill it with --keep).
+Status SaveSketches(const std::vector<LabeledClip>& clips, const EvaluationOptions& options, const std::string& dir) {
+  for (const LabeledClip& c : clips) {
+    if (!Selected(options.only_folds, c.labels, options.fold_label) || !Selected(options.only_contents, c.labels, "content"))
+      continue;
+    ASSIGN_OR_RETURN(MotionClip sketch, MakeSketch(c.skeleton, c.clip, options.sketch));
+    Scene scene;
+    scene.skeleton = c.skeleton;
+    scene.source.format = "bvh";
+    scene.source.unit_name = "cm";
+    scene.source.unit_scale_to_m = 0.01;
+    scene.clips = {sketch};
+    const std::string stem = dir + "/" + c.clip.name + ".sketch";
+    RETURN_IF_ERROR(ExportFile(scene, stem + ".glb"));
+    ResampleOptions resample;
+    resample.rate_hz = c.clip.sample_rate_hz / options.sketch.key_every_frames;
+    resample.translation = TranslationInterpolation::kLinear;
+    ASSIGN_OR_RETURN(scene.clips[0], ResampleClip(sketch, resample));
+    RETURN_IF_ERROR(ExportFile(scene, stem + ".bvh"));
+  }
+  return OkStatus();
+}
+
+int RunEval(EvalArgs& args) {
+  EvaluationOptions options;
+  options.fold_label = args.loso;
+  options.sketch.keep_joints = SplitList(args.keep);
+  options.sketch.key_every_frames = args.every;
+  options.only_folds = SplitList(args.folds);
+  options.only_contents = SplitList(args.contents);
+  Status flags = ApplyFillFlagText(args.text, args.fill);
+  for (const std::string& name : SplitList(args.methods)) {
+    Result<FillMethod> method = ParseFillMethod(name);
+    if (!method.ok()) flags = method.status();
+    if (!flags.ok()) break;
+    NamedMethod named{name, args.fill};
+    named.options.method = *method;
+    options.methods.push_back(named);
+  }
+  if (flags.ok()) flags = options.Validate();
+  if (!flags.ok()) {
+    PrintError(flags.message());
+    return kExitUsage;
+  }
+  Result<std::vector<LabeledClip>> clips = LoadClips(args);
+  if (!clips.ok()) {
+    PrintError(clips.status().message());
+    return ExitCodeFor(clips.status(), Stage::kInput);
+  }
+  if (!args.save_sketches.empty()) {
+    const Status saved = SaveSketches(*clips, options, args.save_sketches);
+    if (!saved.ok()) return Fail(saved, Stage::kOutput);
+    return kExitOk;
+  }
+  options.on_clip_done = [](int done, int total) {
+    if (!IsQuiet()) std::fprintf(stderr, "\rscored %d/%d clips", done, total);
+  };
+  Result<EvaluationResult> result = RunLeaveOneOut(*clips, options);
+  if (!IsQuiet()) std::fprintf(stderr, "\n");
+  if (!result.ok()) {
+    PrintError(result.status().message());
+    return ExitCodeFor(result.status(), Stage::kProcessing);
+  }
+  if (args.json) {
+    PrintJson(*result, args);
+  } else {
+    PrintTable(*result, args);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void AddEvalCommand(CLI::App& app, CommandAction& action) {
+  auto args = std::make_shared<EvalArgs>();
+  CLI::App* command = app.add_subcommand(
+      "eval", "Score fill methods leave-one-out: sketches made from ground-truth clips, filled, compared");
+  command->add_option("--db", args->db, "Motion files or folders of the evaluation set (BVH, glTF, FBX)")
+      ->required();
+  command->add_option("--loso", args->loso, "Clip label whose values form the folds (leave-one-out)")
+      ->capture_default_str();
+  command->add_option("--keep", args->keep, "Joints kept in the sketches (comma-separated)")->capture_default_str();
+  command->add_option("--every", args->every, "Key spacing of the sketches, frames")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  command->add_option("--methods", args->methods, "Methods to score: mean, nn, fragment, hierarchical")
+      ->capture_default_str();
+  command->add_option("--folds", args->folds, "Only these folds (comma-separated label values)");
+  command->add_option("--contents", args->contents, "Only test clips with these contents (comma-separated)");
+  command->add_flag("--json", args->json, "Print JSON (summary and per clip) instead of the table");
+  command->add_option("--save-sketches", args->save_sketches,
+                      "Only write the selected clips' sketches (.sketch.glb, and .sketch.bvh at the key rate) to DIR");
+  AddFillFlags(*command, args->fill, args->text);
+  command->footer(
+      "Example:\n"
+      "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
+      "      --methods mean,nn,fragment,hierarchical --json > eval.json");
+  command->callback([args, &action] { action = [args] { return RunEval(*args); }; });
+}
+
+}  // namespace mocapfill::cli

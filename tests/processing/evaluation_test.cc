@@ -1,0 +1,112 @@
+// Sketch making and fill metrics on a real Bandai-Namco walk (shared corpus).
+#include <gtest/gtest.h>
+
+#include "formats/motion_io.h"
+#include "processing/evaluation/metrics.h"
+#include "processing/evaluation/sketch_maker.h"
+#include "processing/core/rotation.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+constexpr double kExactDeg = 1e-6;
+
+const char* kLegs[] = {"Hips", "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L",
+                       "UpperLeg_R", "LowerLeg_R", "Foot_R", "Toes_R"};
+
+Scene LoadWalk() {
+  Result<Scene> scene = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_normal_001.bvh"));
+  EXPECT_TRUE(scene.ok()) << scene.status().message();
+  return scene.ok() ? std::move(*scene) : Scene{};
+}
+
+SketchSpec LegSpec() {
+  SketchSpec spec;
+  spec.keep_joints.assign(std::begin(kLegs), std::end(kLegs));
+  spec.key_every_frames = 8;
+  return spec;
+}
+
+TEST(SketchMaker, KeyFramesIncludeTheLastFrame) {
+  EXPECT_EQ(SketchKeyFrames(20, 8), (std::vector<int>{0, 8, 16, 19}));
+  EXPECT_EQ(SketchKeyFrames(17, 8), (std::vector<int>{0, 8, 16}));
+}
+
+TEST(SketchMaker, RejectsUnknownJointsAndBadSpacing) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Scene walk = LoadWalk();
+  SketchSpec spec = LegSpec();
+  spec.keep_joints.push_back("Tail");
+  EXPECT_EQ(MakeSketch(walk.skeleton, walk.clips[0], spec).status().code(), ErrorCode::kInvalidArgument);
+  spec = LegSpec();
+  spec.key_every_frames = 0;
+  EXPECT_EQ(MakeSketch(walk.skeleton, walk.clips[0], spec).status().code(), ErrorCode::kInvalidArgument);
+}
+
+TEST(SketchMaker, KeepsListedJointsAtKeysAndDropsTheRest) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Scene walk = LoadWalk();
+  const MotionClip& truth = walk.clips[0];
+  Result<MotionClip> sketch = MakeSketch(walk.skeleton, truth, LegSpec());
+  ASSERT_TRUE(sketch.ok()) << sketch.status().message();
+  const int hips = *walk.skeleton.Find("Hips"), hand = *walk.skeleton.Find("Hand_L");
+  EXPECT_EQ(sketch->keys[hips].rotation_frames, SketchKeyFrames(truth.num_frames, 8));
+  EXPECT_EQ(sketch->keys[hips].translation_frames, SketchKeyFrames(truth.num_frames, 8));
+  EXPECT_TRUE(sketch->keys[hand].empty());
+  for (int f : sketch->keys[hips].rotation_frames) {
+    EXPECT_LT(GeodesicAngle(sketch->rotation(f, hips), truth.rotation(f, hips)) * kDegPerRad, kExactDeg);
+    EXPECT_LT((sketch->translation(f, hips) - truth.translation(f, hips)).norm(), 1e-12);
+  }
+  // Between keys the sketch is the slerp, which differs from the capture.
+  EXPECT_GT(GeodesicAngle(sketch->rotation(4, hips), truth.rotation(4, hips)), 0.0);
+  EXPECT_LT(GeodesicAngle(sketch->rotation(30, hand), walk.skeleton.joint(hand).rest_rotation), 1e-12);
+}
+
+TEST(FillMetrics, TruthAgainstItselfScoresZero) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Scene walk = LoadWalk();
+  const MotionClip& truth = walk.clips[0];
+  const MotionClip sketch = *MakeSketch(walk.skeleton, truth, LegSpec());
+  Result<FillMetrics> m = ScoreFill(walk.skeleton, truth, sketch, truth, *walk.skeleton.Find("Hips"));
+  ASSERT_TRUE(m.ok());
+  EXPECT_EQ(m->unkeyed_joints, 12);  // Bandai upper body: spine to hands
+  EXPECT_DOUBLE_EQ(m->mpjpe_unkeyed_cm, 0.0);
+  EXPECT_DOUBLE_EQ(m->mpjpe_keyed_between_cm, 0.0);
+  EXPECT_DOUBLE_EQ(m->npss, 0.0);
+  EXPECT_NEAR(m->jitter_ratio, 1.0, 1e-12);
+  EXPECT_LT(m->foot_skate_cm_per_s, 4.25);  // contacts are frames slower than that
+  EXPECT_DOUBLE_EQ(m->key_error_max_deg, 0.0);
+  EXPECT_DOUBLE_EQ(m->bone_length_error, 0.0);
+}
+
+TEST(FillMetrics, SketchAgainstTruthMeasuresTheMissingUpperBody) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Scene walk = LoadWalk();
+  const MotionClip& truth = walk.clips[0];
+  const MotionClip sketch = *MakeSketch(walk.skeleton, truth, LegSpec());
+  Result<FillMetrics> m = ScoreFill(walk.skeleton, truth, sketch, sketch, *walk.skeleton.Find("Hips"));
+  ASSERT_TRUE(m.ok());
+  // Upper body at the rest pose: tens of centimetres off; legs slerped: a few centimetres.
+  EXPECT_GT(m->mpjpe_unkeyed_cm, 10.0);
+  EXPECT_GT(m->mpjpe_keyed_between_cm, 0.1);
+  EXPECT_LT(m->mpjpe_keyed_between_cm, 5.0);
+  EXPECT_GT(m->npss, 0.0);
+  EXPECT_DOUBLE_EQ(m->key_error_max_deg, 0.0);
+  EXPECT_LT(m->bone_length_error, 1e-9);
+}
+
+TEST(FillMetrics, NpssIsZeroForEqualSpectraAndGrowsWithDifference) {
+  std::vector<std::vector<double>> a(1, std::vector<double>(64)), b = a, c = a;
+  for (int t = 0; t < 64; ++t) {
+    a[0][t] = std::sin(2 * kPi * 2 * t / 64.0);
+    b[0][t] = std::sin(2 * kPi * 4 * t / 64.0);
+    c[0][t] = std::sin(2 * kPi * 8 * t / 64.0);
+  }
+  EXPECT_DOUBLE_EQ(Npss(a, a), 0.0);
+  EXPECT_GT(Npss(a, b), 0.0);
+  EXPECT_GT(Npss(a, c), Npss(a, b));
+}
+
+}  // namespace
+}  // namespace mocapfill
