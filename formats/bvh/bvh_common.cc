@@ -36,34 +36,6 @@ double ParseText(const std::string& text) {
   return value;
 }
 
-// sin and cos of an angle in degrees. The reduction happens in degrees, where removing
-// multiples of 90 is exact, so only |x| <= pi/4 reaches the Taylor polynomials (next
-// terms below 1e-16); about four times cheaper than libm's sincos, as accurate for
-// the angles mocap files hold.
-void SinCosDegrees(double deg, double& sine, double& cosine) {
-  if (!(std::abs(deg) < 1e9)) {
-    sine = std::sin(deg * kRadPerDeg);
-    cosine = std::cos(deg * kRadPerDeg);
-    return;
-  }
-  constexpr double kRoundingShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
-  const double quarter_turns = (deg * (1.0 / 90.0) + kRoundingShift) - kRoundingShift;
-  const double x = (deg - 90.0 * quarter_turns) * kRadPerDeg;
-  const double x2 = x * x;
-  const double s =
-      x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800 +
-          x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000))))))));
-  const double c =
-      1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-          x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200 + x2 * (1.0 / 20922789888000))))))));
-  switch (static_cast<int64_t>(quarter_turns) & 3) {
-    case 0: sine = s, cosine = c; break;
-    case 1: sine = c, cosine = -s; break;
-    case 2: sine = -s, cosine = -c; break;
-    default: sine = -c, cosine = s; break;
-  }
-}
-
 }  // namespace
 
 std::optional<Channel> ParseChannel(std::string_view name) {
@@ -98,30 +70,6 @@ ChannelLayout MakeChannelLayout(const std::vector<Channel>& channels, int& dupli
   for (int i = 0; i < 3; ++i) layout.rotation_slot[i] = rotation_by_axis[listed_axes[i]];
   layout.position_slot = position;
   return layout;
-}
-
-Eigen::Quaterniond ComposeEulerDegrees(const std::array<double, 3>& angles_deg, const EulerOrder& order) {
-  double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    if (angles_deg[i] == 0.0) continue;
-    double s, c;
-    SinCosDegrees(0.5 * angles_deg[i], s, c);
-    // q * (c + s e_a) = (w c - s v_a,  c v + w s e_a + s (v x e_a)), written out per axis.
-    const double w0 = w, x0 = x, y0 = y, z0 = z;
-    switch (order.axes[i]) {
-      case 0:
-        w = w0 * c - x0 * s, x = x0 * c + w0 * s, y = y0 * c + z0 * s, z = z0 * c - y0 * s;
-        break;
-      case 1:
-        w = w0 * c - y0 * s, x = x0 * c - z0 * s, y = y0 * c + w0 * s, z = z0 * c + x0 * s;
-        break;
-      default:
-        w = w0 * c - z0 * s, x = x0 * c + y0 * s, y = y0 * c - x0 * s, z = z0 * c + w0 * s;
-        break;
-    }
-  }
-  const double inverse_norm = 1.0 / std::sqrt(w * w + x * x + y * y + z * z);
-  return Eigen::Quaterniond(w * inverse_norm, x * inverse_norm, y * inverse_norm, z * inverse_norm);
 }
 
 double SnapFrameRate(double frame_time_s) {

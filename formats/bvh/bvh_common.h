@@ -3,7 +3,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -42,11 +41,6 @@ struct ChannelLayout {
 // Builds the layout of a channel list; returns the index of the first repeated channel in
 // `duplicate_index` (and an incomplete layout) when a channel is listed twice, else -1.
 ChannelLayout MakeChannelLayout(const std::vector<Channel>& channels, int& duplicate_index);
-
-// Same rotation as EulerDegreesToQuaternion (intrinsic, R = R_a0 R_a1 R_a2), specialised
-// for the importer's inner loop: each factor is an elementary quaternion, so the products
-// reduce to a few multiplies, and zero angles (a fifth of CMU's values) cost nothing.
-Eigen::Quaterniond ComposeEulerDegrees(const std::array<double, 3>& angles_deg, const EulerOrder& order);
 
 // The frame rate (Hz) for a BVH Frame Time (s). Frame Time is usually a rounded text
 // ("0.0333333", ".0083333"), so a rate within kFrameRateSnapTolerance (relative) of an

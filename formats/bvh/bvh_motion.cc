@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "formats/bvh/bvh_euler.h"
 #include "formats/bvh/bvh_number.h"
 #include "processing/core/rotation.h"
 
@@ -23,7 +24,7 @@ struct JointSampler {
   std::array<int, 3> rotation_index{-1, -1, -1};
   std::array<int, 3> position_index{-1, -1, -1};
   int num_rotations = 0;
-  EulerOrder order;
+  EulerComposer compose = nullptr;
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
 };
 
@@ -37,7 +38,7 @@ std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
       if (joint.layout.position_slot[i] >= 0) s.position_index[i] = joint.first_channel + joint.layout.position_slot[i];
     }
     s.num_rotations = joint.layout.num_rotations;
-    s.order = joint.layout.order;
+    s.compose = ComposerFor(joint.layout.order);
     s.offset = joint.offset;
     samplers.push_back(s);
   }
@@ -46,7 +47,10 @@ std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
 
 // Position channels replace the OFFSET component they name; rotation channels compose
 // intrinsically in listed order (unlisted axes contribute nothing).
+// Each rotation is flipped to the previous frame's hemisphere here, while both are in
+// cache, instead of in a strided pass over the clip afterwards.
 void AppendFrame(const std::vector<JointSampler>& samplers, const double* row, MotionClip& clip) {
+  const size_t joints = samplers.size();
   for (const JointSampler& s : samplers) {
     Eigen::Vector3d t = s.offset;
     for (int a = 0; a < 3; ++a)
@@ -59,7 +63,10 @@ void AppendFrame(const std::vector<JointSampler>& samplers, const double* row, M
     std::array<double, 3> angles_deg{};
     for (int i = 0; i < 3; ++i)
       if (s.rotation_index[i] >= 0) angles_deg[i] = row[s.rotation_index[i]];
-    clip.rotations.push_back(ComposeEulerDegrees(angles_deg, s.order));
+    Eigen::Quaterniond q = s.compose(angles_deg);
+    const size_t index = clip.rotations.size();
+    if (index >= joints && q.coeffs().dot(clip.rotations[index - joints].coeffs()) < 0.0) q.coeffs() = -q.coeffs();
+    clip.rotations.push_back(q);
   }
 }
 

@@ -22,8 +22,8 @@ struct MotionHeader {
 // Parses "Frames: N" and "Frame Time: t" after the MOTION keyword.
 Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer);
 
-// Parses every frame row up to the end of the text into `clip` (rotations and
-// translations, file units; num_frames and num_joints set). A row that ends early, holds
+// Parses every frame row up to the end of the text into `clip` (rotations, already
+// hemisphere-continuous, and translations in file units; num_frames and num_joints set). A row that ends early, holds
 // too many values, or a value that is not a finite number is an error with line:col.
 Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const MotionHeader& header,
                        MotionClip& clip);

@@ -57,14 +57,33 @@ Status CheckFrameCount(const bvh::MotionHeader& header, int rows, const std::str
   return OkStatus();
 }
 
+bool HasPositionChannels(const Joint& joint) {
+  for (const std::string& channel : joint.bvh_channels)
+    if (channel.find("position") != std::string::npos) return true;
+  return false;
+}
+
+// MotionClip::DetectAnimatedTranslations' test (a frame off frame 0 by more than its
+// default tolerance), run only on joints with position channels: the others hold their
+// OFFSET exactly, and skipping them saves a strided pass over the whole clip.
+bool TranslationMoves(const MotionClip& clip, int joint) {
+  constexpr double kAnimatedToleranceM = 1e-9;
+  const Eigen::Vector3d& first = clip.translation(0, joint);
+  for (int f = 1; f < clip.num_frames; ++f)
+    if ((clip.translation(f, joint) - first).cwiseAbs().maxCoeff() > kAnimatedToleranceM) return true;
+  return false;
+}
+
 // Joints whose position channels hold one value over the whole clip are not animated:
 // that value becomes the rest translation (the pose actually used), the original OFFSET
 // is kept for BVH export, and every frame holds exactly the rest value.
 void AdoptConstantPositions(Scene& scene) {
   MotionClip& clip = scene.clips[0];
-  clip.DetectAnimatedTranslations();
+  clip.translation_animated.assign(clip.num_joints, 0);
   for (int j = 0; j < clip.num_joints; ++j) {
     Joint& joint = scene.skeleton.mutable_joint(j);
+    if (!HasPositionChannels(joint)) continue;
+    clip.translation_animated[j] = TranslationMoves(clip, j);
     if (clip.translation_animated[j]) continue;
     const Eigen::Vector3d used = clip.translation(0, j);
     if (used == joint.rest_translation) continue;
@@ -120,10 +139,9 @@ Result<Scene> ReadBvh(std::string_view text, const std::string& path, const Impo
   scene.source.declared_frames = static_cast<int>(header.declared_frames);
   scene.clips.push_back(std::move(clip));
   RETURN_IF_ERROR(ApplyUnitsAndAxes(scene, options));
-  // Finite values and unit quaternions hold by construction, so no Validate() pass here.
-  MotionClip& result = scene.clips[0];
-  result.KeyAllFrames();
-  result.MakeContinuous();
+  // Finite values, unit and hemisphere-continuous quaternions hold by construction, so
+  // neither Validate() nor MakeContinuous() passes are needed here.
+  scene.clips[0].KeyAllFrames();
   return scene;
 }
 

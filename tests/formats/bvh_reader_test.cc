@@ -90,6 +90,9 @@ TEST(BvhReader, CmuClipMatchesTheRawText) {
   EXPECT_EQ(clip.keys.at(0).translation_frames.size(), 60u);
   EXPECT_TRUE(clip.keys.at(5).translation_frames.empty());
   EXPECT_TRUE(clip.Validate(scene->skeleton).ok());
+  for (int f = 1; f < clip.num_frames; ++f)
+    for (int j = 0; j < clip.num_joints; ++j)
+      EXPECT_GE(clip.rotation(f, j).coeffs().dot(clip.rotation(f - 1, j).coeffs()), 0.0) << "hemisphere jump";
 }
 
 TEST(BvhReader, BandaiWalkKeepsOnlyHipsTranslationAnimated) {

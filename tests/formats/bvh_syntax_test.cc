@@ -7,6 +7,7 @@
 #include <random>
 
 #include "formats/bvh/bvh_common.h"
+#include "formats/bvh/bvh_euler.h"
 #include "formats/bvh/bvh_number.h"
 #include "formats/bvh/bvh_reader.h"
 #include "processing/core/rotation.h"
@@ -113,6 +114,19 @@ TEST(BvhSyntax, WhitespaceAndLineEndingVariants) {
   }
 }
 
+TEST(BvhSyntax, QuaternionTracksStayInOneHemisphereWhenAnglesWrap) {
+  // Boxing_Toes' Hips turns near 180 degrees; a file that wraps 179 -> -179 is the same
+  // small turn, and the quaternions must not jump to the other hemisphere.
+  const std::string text = TwoJoints("3 Zrotation Xrotation Yrotation", "0 0 179.5") +
+                           "-6.1 91.7 50.1 1.3 -1.9 179.8 0 0 -179.5\n";
+  const Result<Scene> s = Read(text);
+  ASSERT_TRUE(s.ok()) << s.status().message();
+  const MotionClip& clip = s->clips[0];
+  ASSERT_EQ(clip.num_frames, 3);
+  EXPECT_GT(clip.rotation(2, 1).coeffs().dot(clip.rotation(1, 1).coeffs()), 0.99);
+  EXPECT_LT(GeodesicAngle(clip.rotation(2, 1), Axis(1, -179.5)), 1e-14);
+}
+
 TEST(BvhSyntax, FrameTimeSnapsToRationalRates) {
   const std::pair<const char*, double> cases[] = {
       {"0.0333333", 30.0},          {".0083333", 120.0},         {"0.010000", 100.0},        {"0.0416667", 24.0},
@@ -143,7 +157,9 @@ TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
   std::mt19937_64 rng(42);
   const std::vector<std::string> fixed = {"0", "-0", "1", "-17.3198", ".5", "5.", "+2.5", "0.0000001234",
                                           "123456789012345678", "9007199254740993", "0.30000000000000004",
-                                          "179.842245", "-0.000000", "1e5", "12345.678901234567890"};
+                                          "179.842245", "-0.000000", "1e5", "12345.678901234567890",
+                                          "5.1072e-06", "-1.87007e-05", "1e22", "1e23", "1e-22", "1e-23",
+                                          "9007199254740993e-5", "2.5E+3", "1e00005"};
   std::vector<std::string> samples = fixed;
   for (int n = 0; n < 200000; ++n) {
     const int integer_digits = static_cast<int>(rng() % 6);
@@ -152,6 +168,7 @@ TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
     for (int i = 0; i < integer_digits; ++i) s += static_cast<char>('0' + rng() % 10);
     if (fraction_digits > 0 || integer_digits == 0) s += '.';
     for (int i = 0; i < fraction_digits; ++i) s += static_cast<char>('0' + rng() % 10);
+    if (n % 4 == 0) s += (rng() % 2 ? "e-" : "E") + std::to_string(rng() % 30);  // "5.1072e-06" style
     samples.push_back(s);
   }
   int fast = 0;
@@ -172,7 +189,7 @@ TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
   }
   EXPECT_GT(fast, 150000);  // the fast path, not from_chars, handled the typical values
   double v = 0.0;
-  for (const char* bad : {"-", "+", ".", "1.2.3", "--1", "+-1", "1e", "abc", "1x"}) {
+  for (const char* bad : {"-", "+", ".", "1.2.3", "--1", "+-1", "1e", "1e+", "e5", "abc", "1x"}) {
     const std::string s = bad;
     EXPECT_EQ(bvh::ParseNumber(s.data(), s.data() + s.size(), v), nullptr) << s;
   }
@@ -194,6 +211,21 @@ TEST(BvhSyntax, FastEulerCompositionEqualsTheReference) {
       EXPECT_LT((fast.coeffs() - sign * reference.coeffs()).cwiseAbs().maxCoeff(), 1e-14) << name;
       EXPECT_NEAR(fast.norm(), 1.0, 1e-15);
     }
+  }
+}
+
+TEST(BvhSyntax, SinCosInDegreesMatchesLibm) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> wide(-1e6, 1e6), narrow(-400.0, 400.0);
+  std::vector<double> angles = {0.0, -0.0, 45.0, -45.0, 90.0, 135.0, 180.0, -180.0, 270.0, 360.0, 1e9, -3e12};
+  for (int n = 0; n < 100000; ++n) angles.push_back(n % 2 ? wide(rng) : narrow(rng));
+  for (double deg : angles) {
+    double s = 0.0, c = 0.0;
+    bvh::SinCosDegrees(deg, s, c);
+    // libm reduces the radian value, so compare at the precision of deg * pi / 180 itself.
+    const double tolerance = 4e-16 + 2e-16 * std::abs(deg * kRadPerDeg);
+    EXPECT_NEAR(s, std::sin(deg * kRadPerDeg), tolerance) << deg;
+    EXPECT_NEAR(c, std::cos(deg * kRadPerDeg), tolerance) << deg;
   }
 }
 

@@ -1,0 +1,84 @@
+#include "formats/bvh/bvh_euler.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace mocapfill::bvh {
+
+namespace {
+
+[[gnu::always_inline]] inline void SinCosDegreesInline(double deg, double& sine, double& cosine) {
+  if (!(std::abs(deg) < 1e9)) {
+    sine = std::sin(deg * kRadPerDeg);
+    cosine = std::cos(deg * kRadPerDeg);
+    return;
+  }
+  constexpr double kRoundingShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
+  const double quarter_turns = (deg * (1.0 / 90.0) + kRoundingShift) - kRoundingShift;
+  const double x = (deg - 90.0 * quarter_turns) * kRadPerDeg;  // deg - 90 k is exact
+  const double x2 = x * x;
+  // Taylor series to x^15 / x^16: the next terms are below 1e-16 for |x| <= pi/4.
+  const double s =
+      x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800 +
+          x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000))))))));
+  const double c =
+      1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
+          x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200 + x2 * (1.0 / 20922789888000))))))));
+  // Quarter turn q maps (s, c) to (s, c), (c, -s), (-s, -c), (-c, s); table lookups
+  // instead of a switch keep it branch-free.
+  static constexpr double kSign[2] = {1.0, -1.0};
+  const unsigned q = static_cast<unsigned>(static_cast<int64_t>(quarter_turns)) & 3u;
+  const double pair[2] = {s, c};
+  sine = pair[q & 1u] * kSign[q >> 1];
+  cosine = pair[(q & 1u) ^ 1u] * kSign[((q + 1u) >> 1) & 1u];
+}
+
+// q * (c + s e_A) = (w c - s v_A,  c v + w s e_A + s (v x e_A)), written out for axis A.
+template <int A>
+inline void MultiplyByAxis(double& w, double (&v)[3], double c, double s) {
+  constexpr int B = (A + 1) % 3, D = (A + 2) % 3;
+  const double w0 = w, va = v[A], vb = v[B], vd = v[D];
+  w = w0 * c - va * s;
+  v[A] = va * c + w0 * s;
+  v[B] = vb * c + vd * s;  // (v x e_A)_B = v_D
+  v[D] = vd * c - vb * s;  // (v x e_A)_D = -v_B
+}
+
+template <int A0, int A1, int A2>
+Eigen::Quaterniond Compose(const std::array<double, 3>& angles_deg) {
+  // Joints that never turn (CMU's fingers, a fifth of its values) skip the trigonometry;
+  // the branch follows the joint, so it predicts well.
+  if (angles_deg[0] == 0.0 && angles_deg[1] == 0.0 && angles_deg[2] == 0.0) return Eigen::Quaterniond::Identity();
+  double s[3], c[3];
+  for (int i = 0; i < 3; ++i) SinCosDegreesInline(0.5 * angles_deg[i], s[i], c[i]);
+  double w = c[0], v[3] = {0.0, 0.0, 0.0};
+  v[A0] = s[0];
+  MultiplyByAxis<A1>(w, v, c[1], s[1]);
+  MultiplyByAxis<A2>(w, v, c[2], s[2]);
+  // Each factor has c^2 + s^2 = 1 to an ulp or two, so the product is unit to ~1e-15
+  // and needs no normalising.
+  return Eigen::Quaterniond(w, v[0], v[1], v[2]);
+}
+
+}  // namespace
+
+void SinCosDegrees(double deg, double& sine, double& cosine) { SinCosDegreesInline(deg, sine, cosine); }
+
+EulerComposer ComposerFor(const EulerOrder& order) {
+  const auto& a = order.axes;
+  const int code = a[0] * 9 + a[1] * 3 + a[2];
+  switch (code) {
+    case 0 * 9 + 1 * 3 + 2: return &Compose<0, 1, 2>;
+    case 0 * 9 + 2 * 3 + 1: return &Compose<0, 2, 1>;
+    case 1 * 9 + 0 * 3 + 2: return &Compose<1, 0, 2>;
+    case 1 * 9 + 2 * 3 + 0: return &Compose<1, 2, 0>;
+    case 2 * 9 + 0 * 3 + 1: return &Compose<2, 0, 1>;
+    default: return &Compose<2, 1, 0>;  // EulerOrder guarantees three distinct axes
+  }
+}
+
+Eigen::Quaterniond ComposeEulerDegrees(const std::array<double, 3>& angles_deg, const EulerOrder& order) {
+  return ComposerFor(order)(angles_deg);
+}
+
+}  // namespace mocapfill::bvh
