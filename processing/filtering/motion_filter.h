@@ -40,7 +40,7 @@ struct MultiresFilterOptions {
 // Filters `clip` (which must be valid for `skeleton`). Unit gains return the clip up to
 // floating-point rounding (< 1e-9 rad). The output keeps name, rate, frame count, keys and
 // the translations of joints other than the root. Errors: invalid options, a joint index
-// out of range, more gains than levels (kInvalidArgument).
+// out of range, a gain other than 1 for a band the clip does not have (kInvalidArgument).
 Result<MotionClip> MultiresFilter(const Skeleton& skeleton, const MotionClip& clip,
                                   const MultiresFilterOptions& options);
 

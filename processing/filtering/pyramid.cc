@@ -166,9 +166,11 @@ Result<Pyramid> BuildPyramid(const Eigen::MatrixXd& signal, double rate_hz, cons
 }
 
 Result<Eigen::MatrixXd> Reconstruct(const Pyramid& pyramid, const BandGains& gains) {
-  if (static_cast<int>(gains.band_gains.size()) > pyramid.levels())
-    return InvalidArgument("pyramid: " + std::to_string(gains.band_gains.size()) + " band gains given, but the signal has " +
-                           std::to_string(pyramid.levels()) + " band-pass levels");
+  for (size_t k = pyramid.levels(); k < gains.band_gains.size(); ++k)
+    if (gains.band_gains[k] != 1.0)
+      return InvalidArgument("pyramid: gain " + std::to_string(gains.band_gains[k]) + " for band L" + std::to_string(k) +
+                             ", but the signal (" + std::to_string(pyramid.residual.rows()) + " frames) has only " +
+                             std::to_string(pyramid.levels()) + " band-pass levels");
   for (double g : gains.band_gains)
     if (!std::isfinite(g)) return InvalidArgument("pyramid: band gains must be finite");
   if (!std::isfinite(gains.residual_gain)) return InvalidArgument("pyramid: residual gain must be finite");

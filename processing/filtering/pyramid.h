@@ -69,14 +69,16 @@ struct Pyramid {
 // sample (kInvalidArgument).
 Result<Pyramid> BuildPyramid(const Eigen::MatrixXd& signal, double rate_hz, const PyramidOptions& options);
 
-// Per-band gains of a reconstruction. Gains beyond band_gains.size() are 1; more gains than
-// levels is an error, because the user meant bands the clip does not have.
+// Per-band gains of a reconstruction. Gains beyond band_gains.size() are 1. Gains for bands
+// beyond the signal's levels are ignored when they are 1 (a gain list written for longer
+// clips still applies) and an error otherwise, because they would edit bands the clip does not have.
 struct BandGains {
   std::vector<double> band_gains;  // g_0 (highest frequency) ..
   double residual_gain = 1.0;      // gain of G_fb (the slowly varying "average pose")
 };
 
-// x' = residual_gain * G_fb + sum_k g_k * L_k. Errors: more gains than levels, non-finite gains.
+// x' = residual_gain * G_fb + sum_k g_k * L_k. Errors: a gain != 1 for a band beyond the levels,
+// non-finite gains (kInvalidArgument).
 Result<Eigen::MatrixXd> Reconstruct(const Pyramid& pyramid, const BandGains& gains);
 
 // BuildPyramid then Reconstruct, for callers that only want the filtered signal.

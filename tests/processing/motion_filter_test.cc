@@ -18,6 +18,8 @@ TEST(MultiresFilter, ValidateRejectsBadOptions) {
   EXPECT_EQ(MultiresFilter(skeleton, clip, options).status().code(), ErrorCode::kInvalidArgument);
   options = {};
   options.gains.band_gains.assign(12, 1.0);  // 121 frames have 6 levels
+  EXPECT_TRUE(MultiresFilter(skeleton, clip, options).ok());
+  options.gains.band_gains[9] = 2.0;
   EXPECT_EQ(MultiresFilter(skeleton, clip, options).status().code(), ErrorCode::kInvalidArgument);
 }
 

@@ -118,7 +118,11 @@ TEST(Pyramid, GainsScaleABandAndItsEnergyByGainSquared) {
   // ... and the scaled band, g^2.
   const Eigen::MatrixXd scaled = *y - (x - pyramid->bands[2]);
   EXPECT_NEAR(scaled.squaredNorm(), 2.5 * 2.5 * band_energy, 1e-9 * band_energy);
-  gains.band_gains.assign(8, 1.0);
+  // Gains for bands the signal does not have: ignored when 1, an error otherwise.
+  gains.band_gains.assign(9, 1.0);
+  ASSERT_TRUE(Reconstruct(*pyramid, gains).ok());
+  EXPECT_LT((*Reconstruct(*pyramid, gains) - x).cwiseAbs().maxCoeff(), kExact);
+  gains.band_gains[8] = 1.2;
   EXPECT_EQ(Reconstruct(*pyramid, gains).status().code(), ErrorCode::kInvalidArgument);
 }
 
