@@ -2,6 +2,7 @@
 #include <tiny_gltf.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -59,33 +60,61 @@ Status ReadIndices(const tinygltf::Model& model, const tinygltf::Primitive& prim
   return OkStatus();
 }
 
-// JOINTS_0 / WEIGHTS_0, with weights renormalised to sum 1 (FBX-sourced files often do not).
+// Skin influences from every JOINTS_n / WEIGHTS_n set: a joint listed twice is merged,
+// the 4 largest weights are kept and renormalised to sum 1 (FBX-sourced files often do not).
 Status ReadSkinning(const tinygltf::Model& model, const tinygltf::Primitive& prim, size_t vertices, size_t skin_joints,
                     const std::string& field, MeshPrimitive& out, std::vector<std::string>& warnings) {
-  ASSIGN_OR_RETURN(AccessorData joints, ReadAttribute(model, prim, "JOINTS_0", 4, vertices, field));
-  ASSIGN_OR_RETURN(AccessorData weights, ReadAttribute(model, prim, "WEIGHTS_0", 4, vertices, field));
-  if (joints.count == 0 || weights.count == 0)
-    return InvalidData(field + ": a skinned mesh needs JOINTS_0 and WEIGHTS_0 attributes");
-  if (!IsIntegerType(joints.component_type) || joints.normalized)
-    return InvalidData(field + ".attributes.JOINTS_0: not unsigned integers");
-  if (prim.attributes.count("JOINTS_1"))
-    warnings.push_back(field + ": JOINTS_1/WEIGHTS_1 ignored (4 influences per vertex are kept)");
-  int zero_sums = 0;
+  std::vector<AccessorData> joint_sets, weight_sets;
+  for (int set = 0; prim.attributes.count("JOINTS_" + Str(set)); ++set) {
+    const std::string joints_name = "JOINTS_" + Str(set), weights_name = "WEIGHTS_" + Str(set);
+    if (!prim.attributes.count(weights_name)) return InvalidData(field + ": " + joints_name + " without " + weights_name);
+    ASSIGN_OR_RETURN(AccessorData joints, ReadAttribute(model, prim, joints_name, 4, vertices, field));
+    ASSIGN_OR_RETURN(AccessorData weights, ReadAttribute(model, prim, weights_name, 4, vertices, field));
+    if (!IsIntegerType(joints.component_type) || joints.normalized)
+      return InvalidData(field + ".attributes." + joints_name + ": not unsigned integers");
+    joint_sets.push_back(std::move(joints));
+    weight_sets.push_back(std::move(weights));
+  }
+  if (joint_sets.empty()) return InvalidData(field + ": a skinned mesh needs JOINTS_0 and WEIGHTS_0 attributes");
+  int zero_sums = 0, trimmed = 0;
   out.joints.resize(vertices);
   out.weights.resize(vertices);
+  std::vector<std::pair<double, int>> influences;  // (weight, joint)
   for (size_t v = 0; v < vertices; ++v) {
-    Eigen::Vector4d w;
-    for (int c = 0; c < 4; ++c) {
-      const double index = joints.values[v * 4 + c];
-      w[c] = weights.values[v * 4 + c];
-      if (index >= static_cast<double>(skin_joints))
-        return InvalidData(field + ".attributes.JOINTS_0: joint " + Str(static_cast<int64_t>(index)) + " of vertex " +
-                           Str(v) + " is out of range (the skin has " + Str(skin_joints) + " joints)");
-      out.joints[v][c] = static_cast<uint16_t>(index);
+    influences.clear();
+    for (size_t set = 0; set < joint_sets.size(); ++set) {
+      for (int c = 0; c < 4; ++c) {
+        const double index = joint_sets[set].values[v * 4 + c];
+        const double weight = weight_sets[set].values[v * 4 + c];
+        if (index >= static_cast<double>(skin_joints))
+          return InvalidData(field + ".attributes.JOINTS_" + Str(set) + ": joint " + Str(static_cast<int64_t>(index)) +
+                             " of vertex " + Str(v) + " is out of range (the skin has " + Str(skin_joints) + " joints)");
+        if (!(weight > 0)) continue;
+        const int joint = static_cast<int>(index);
+        auto same = std::find_if(influences.begin(), influences.end(), [&](const auto& p) { return p.second == joint; });
+        if (same != influences.end()) same->first += weight; else influences.emplace_back(weight, joint);
+      }
     }
-    if (!NormaliseInfluences(out.joints[v], w)) ++zero_sums;
+    if (influences.size() > 4) {
+      // Largest first; ties by joint index so that the result does not depend on slot order.
+      // Up to 4 influences keep their slot order, so a valid file reads back as written.
+      std::sort(influences.begin(), influences.end(),
+                [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+      ++trimmed;
+    }
+    std::array<std::uint16_t, 4> joints{0, 0, 0, 0};
+    Eigen::Vector4d w = Eigen::Vector4d::Zero();
+    for (size_t k = 0; k < influences.size() && k < 4; ++k) {
+      joints[k] = static_cast<std::uint16_t>(influences[k].second);
+      w[k] = influences[k].first;
+    }
+    if (influences.empty()) joints[0] = static_cast<std::uint16_t>(joint_sets[0].values[v * 4]);
+    if (!NormaliseInfluences(joints, w)) ++zero_sums;
+    out.joints[v] = joints;
     out.weights[v] = w.cast<float>();
   }
+  if (trimmed)
+    warnings.push_back(field + ": " + Str(trimmed) + " vertices had more than 4 skin influences; the 4 largest were kept");
   if (zero_sums)
     warnings.push_back(field + ": " + Str(zero_sums) + " vertices had no skin weight; bound to their first joint");
   return OkStatus();

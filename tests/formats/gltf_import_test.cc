@@ -70,6 +70,15 @@ void CheckQuadSkin(const std::string& path, const std::string& out_name) {
   EXPECT_TRUE(scene->clips.empty());
   ASSERT_EQ(scene->skins.size(), 1u);
   EXPECT_EQ(scene->skins[0].joints.size(), 10u);
+  // Up to 12 influences per vertex (JOINTS_0..2): the 4 largest are kept and renormalised.
+  // Vertex 0: 0.2157 (joint 5), 0.2069 (0), 0.1126 (1), 0.0901 (3), then four smaller ones.
+  const MeshPrimitive& quad = scene->meshes.at(0).primitives.at(0);
+  EXPECT_EQ(quad.joints[0], (std::array<std::uint16_t, 4>{5, 0, 1, 3}));
+  const double top4 = 0.21567927300930023 + 0.20686699450016022 + 0.1125933825969696 + 0.09007582813501358;
+  EXPECT_NEAR(quad.weights[0][0], 0.21567927300930023 / top4, 1e-6);
+  for (const Eigen::Vector4f& w : quad.weights) EXPECT_NEAR(w.sum(), 1.0f, 1e-6f);
+  ASSERT_EQ(scene->warnings.size(), 1u);
+  EXPECT_NE(scene->warnings[0].find("more than 4 skin influences"), std::string::npos) << scene->warnings[0];
   Result<std::string> out = testing::WriteGltfOutput(*scene, out_name);
   ASSERT_TRUE(out.ok()) << out.status().message();
   Result<Scene> back = testing::ReadGltfFile(*out);
