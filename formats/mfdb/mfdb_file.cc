@@ -126,9 +126,15 @@ class PayloadReader {
  private:
   Status Take(void* dst, size_t size, const char* name) {
     if (size > remaining_) return InvalidData(std::string("section ") + name + " runs past the end of the payload");
-    if (size == 0) return OkStatus();
-    if (!source_.Read(dst, size)) return InvalidData(std::string("truncated inside section ") + name);
-    hash_.Update(dst, size);
+    // Read and hash in cache-sized pieces, so each byte is hashed while still in cache.
+    constexpr size_t kPiece = 256 * 1024;
+    unsigned char* out = static_cast<unsigned char*>(dst);
+    for (size_t done = 0; done < size;) {
+      const size_t n = std::min(kPiece, size - done);
+      if (!source_.Read(out + done, n)) return InvalidData(std::string("truncated inside section ") + name);
+      hash_.Update(out + done, n);
+      done += n;
+    }
     remaining_ -= size;
     return OkStatus();
   }

@@ -39,7 +39,8 @@ struct CorrelationTable {
 // Computes the table over all segments of `signals` (rows = frames, columns = channels).
 // Means and standard deviations are taken over all rows; a channel whose standard deviation
 // is below 1e-9 (e.g. a joint that never moves) correlates 0 with everything. Each lag's sum
-// runs over the row pairs (t, t + tau) that lie inside one segment. The diagonal at lag 0 is
+// runs over the row pairs (t, t + tau) that lie inside one segment; rows outside every
+// segment take part in no pair. The diagonal at lag 0 is
 // 1 for moving channels. Entry (b, a) mirrors (a, b) with the lag negated. Work is split over
 // `threads` threads (0 = hardware concurrency); the result does not depend on the split.
 // Errors: segments outside the matrix or overlapping, negative max lag (kInvalidArgument).
