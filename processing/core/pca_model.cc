@@ -37,6 +37,9 @@ Status PcaModel::Validate() const {
   if (k < 1 || k > dim) return InvalidData("model must have between 1 and " + std::to_string(dim) + " components");
   if (m.variances.size() != k) return InvalidData(Field("variances", m.variances.size(), k));
   if (m.spectrum.size() != dim) return InvalidData(Field("spectrum", m.spectrum.size(), dim));
+  if (m.residual_variance.size() != dim) return InvalidData(Field("residual_variance", m.residual_variance.size(), dim));
+  if (!m.residual_variance.allFinite() || !(m.residual_variance.array() >= 0.0).all())
+    return InvalidData("residual_variance must be finite and >= 0");
   if (m.coefficient_accel_rms.size() != k) return InvalidData(Field("coefficient_accel_rms", m.coefficient_accel_rms.size(), k));
   if (m.channel_accel_rms.size() != pose) return InvalidData(Field("channel_accel_rms", m.channel_accel_rms.size(), pose));
   if (!m.mean.allFinite() || !m.components.allFinite() || !m.spectrum.allFinite())

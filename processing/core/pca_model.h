@@ -43,6 +43,10 @@ struct PcaModel {
   Eigen::MatrixXd components;     // dim() x K, orthonormal columns, decreasing variance
   Eigen::VectorXd variances;      // K eigenvalues lambda_k (weighted units squared)
   Eigen::VectorXd spectrum;       // all dim() eigenvalues, decreasing (explained variance, PPCA residual)
+  // Per entry of the vector (dim() entries): the database variance the K components leave
+  // unexplained, diag(S - U Lambda U^T). Observations of a channel are trusted no more
+  // than the model can reproduce them (closed-form fit).
+  Eigen::VectorXd residual_variance;
   // Root-mean-square second difference over database frames (per frame, at sample_rate_hz):
   // of each coefficient c_k (K entries) and of each pose channel (pose_dim entries). These
   // are the smoothness sigmas s_acc of algorithms.md 6.2.

@@ -65,7 +65,9 @@ Status ClosedFormOptions::Validate() const {
 Result<Eigen::MatrixXd> ClosedFormCoefficients(const PcaModel& model, const Eigen::MatrixXd& values,
                                                const ChannelMask& observed, const ClosedFormOptions& options) {
   RETURN_IF_ERROR(CheckInputs(model, values, observed, options));
-  const Eigen::VectorXd sigma = ChannelSigmas(model, options.noise_deg, options.root_noise);
+  Eigen::VectorXd sigma = ChannelSigmas(model, options.noise_deg, options.root_noise);
+  if (options.include_model_residual)
+    sigma = (sigma.array().square() + model.residual_variance.array()).sqrt().matrix();
   Eigen::MatrixXd coefficients = Eigen::MatrixXd::Zero(values.rows(), model.num_components());
   std::map<std::vector<int>, PatternSolver> solvers;
   std::vector<int> channels;

@@ -161,6 +161,7 @@ Status EstimatePcaBasis(const Eigen::MatrixXd& poses, std::span<const int> segme
   model.components = components;
   model.variances = spectrum.head(k);
   model.spectrum = spectrum;
+  model.residual_variance = (covariance.diagonal() - components.cwiseAbs2() * model.variances).cwiseMax(0.0);
 
   // Smoothness statistics (6.2): consecutive windows differ by one frame, so the second
   // difference of the coefficients is the projection of stacked pose second differences.

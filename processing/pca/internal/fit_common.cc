@@ -108,7 +108,8 @@ Result<ceres::Solver::Options> MakeSolverOptions(const PcaFitOptions& options) {
   o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   // The default problem is linear least squares: a large initial radius makes the first
   // LM step a Gauss-Newton step, which is exact, so the fit converges in about 2 steps.
-  o.initial_trust_region_radius = 1e8;
+  o.initial_trust_region_radius = 1e16;
+  o.max_trust_region_radius = 1e16;
   o.max_num_iterations = options.max_iterations;
   o.function_tolerance = options.function_tolerance;
   o.num_threads = options.num_threads > 0 ? options.num_threads
@@ -134,10 +135,14 @@ SolverReport MakeReport(const ceres::Solver::Summary& summary, const ceres::Solv
   SolverReport report;
   report.termination_type = ceres::TerminationTypeToString(summary.termination_type);
   report.converged = summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
-  report.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
+  // Ceres records the evaluation at the start as iteration 0; count only the steps taken.
+  report.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);
   report.initial_cost = summary.initial_cost;
   report.final_cost = summary.final_cost;
   report.solve_time_s = summary.total_time_in_seconds;
+  report.preprocess_time_s = summary.preprocessor_time_in_seconds;
+  report.jacobian_time_s = summary.jacobian_evaluation_time_in_seconds + summary.residual_evaluation_time_in_seconds;
+  report.linear_solver_time_s = summary.linear_solver_time_in_seconds;
   report.message = summary.message;
   report.linear_solver = ceres::LinearSolverTypeToString(summary.linear_solver_type_used);
   if (summary.linear_solver_type_used == ceres::SPARSE_NORMAL_CHOLESKY)
