@@ -17,5 +17,6 @@ void AddFilterCommand(CLI::App& app, CommandAction& action);
 void AddAnalyzeCommand(CLI::App& app, CommandAction& action);
 void AddFillCommand(CLI::App& app, CommandAction& action);
 void AddEvalCommand(CLI::App& app, CommandAction& action);
+void AddPcaCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace mocapfill::cli

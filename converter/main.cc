@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   AddAnalyzeCommand(app, action);
   AddFillCommand(app, action);
   AddEvalCommand(app, action);
+  AddPcaCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
