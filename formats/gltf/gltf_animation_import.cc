@@ -89,15 +89,19 @@ Result<std::vector<int>> SelectAnimations(const tinygltf::Model& model, const st
   std::vector<int> all(count);
   for (int a = 0; a < count; ++a) all[a] = a;
   if (selection.empty()) return all;
+  // Unnamed animations go by the name their clip gets ("animation_<index>").
+  const auto name_of = [&](int a) {
+    return model.animations[a].name.empty() ? "animation_" + Str(a) : model.animations[a].name;
+  };
   for (int a = 0; a < count; ++a)
-    if (model.animations[a].name == selection) return std::vector<int>{a};
+    if (name_of(a) == selection) return std::vector<int>{a};
   if (selection.find_first_not_of("0123456789") == std::string::npos && selection.size() < 9) {
     const int index = std::stoi(selection);
     if (index < count) return std::vector<int>{index};
   }
   std::string available;
   for (int a = 0; a < count; ++a)
-    available += (a ? ", '" : "'") + model.animations[a].name + "' (" + Str(a) + ")";
+    available += (a ? ", '" : "'") + name_of(a) + "' (" + Str(a) + ")";
   return InvalidArgument("animation '" + selection + "' not found; " +
                          (count ? "available: " + available : std::string("the file has no animations")));
 }

@@ -32,6 +32,7 @@ void CheckSimpleSkin(const std::string& path, const std::string& out_name) {
   const MotionClip& clip = scene->clips[0];
   EXPECT_EQ(clip.sample_rate_hz, 24.0);  // keys every 0.5 s: the 24 Hz grid is the lowest that fits
   EXPECT_DOUBLE_EQ(clip.duration_s(), 5.5);
+  EXPECT_EQ(clip.name, "animation_0");  // unnamed in the file
   EXPECT_EQ(clip.keys[1].rotation_frames.size(), 12u);
   EXPECT_TRUE(clip.keys[0].empty());  // node_1 has no channel: missing, holds its rest pose
   // Key 2 (1.0 s, frame 24) is (0, 0, 0.707, 0.707): 90 degrees about Z.
