@@ -40,6 +40,12 @@ void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
                      "Overlap of neighbouring fragments (share of their length) cross-faded instead of seam smoothing")
       ->check(CLI::Range(0.0, 2.0))
       ->capture_default_str();
+  command.add_option("--root-drives", options.root_drives, "Hierarchical: the keyed root's tilt always drives")
+      ->capture_default_str();
+  command.add_option("--synth-weight", options.synthesized_driver_weight,
+                     "Hierarchical: weight of already synthesised joints as drivers (keyed = 1)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
   command.add_option("--threads", options.threads, "Matching threads (0 = all cores)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();

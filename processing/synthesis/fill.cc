@@ -155,7 +155,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     for (const JointGroup& group : PlanGroups(db.skeleton(), fixed)) {
       std::vector<DrivenChannel> driven =
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
-                        options.synthesized_driver_weight, options.root_feature_weight);
+                        options.synthesized_driver_weight, options.root_feature_weight, options.root_drives);
       if (driven.empty()) driven = AllKeyedDrivers(db, s, options);
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
@@ -164,8 +164,9 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       ReportGroup(ctx, group.name, r, options.blend, report);
       std::string drivers;
       for (size_t i = 0; i < driven.size(); i += 3) {
-        const int joint = s.JointOf(driven[i].channel, db.root_joint());
-        drivers += (i ? "," : "") + (driven[i].channel >= 3 * db.num_joints() ? std::string("root") : db.skeleton().name(joint));
+        const bool features = driven[i].channel >= 3 * db.num_joints();
+        drivers += (i ? "," : "") + (features ? std::string("root features") : db.skeleton().name(driven[i].channel / 3));
+        if (features) break;  // the root features close the list
       }
       report.group_order.push_back(group.name + " <- " + drivers);
       for (int j : group.joints) available[j] = 1;

@@ -37,8 +37,8 @@ struct FillOptions {
   MatchSignal match_signal = MatchSignal::kLowPass;
   bool texture = false;     // add the chosen fragments' high bands to keyed channels
   bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
-  int candidates = 32;      // K best candidates kept per fragment
-  int blend = 32;           // candidates averaged per fragment (1 = the joined one alone)
+  int candidates = 128;     // K best candidates kept per fragment
+  int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching
@@ -46,9 +46,10 @@ struct FillOptions {
   double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
   double max_length_ratio = 1.5;
   double seam_window_s = 0.25;     // seam smoothing reach on each side
-  double crossfade = 0.0;          // > 0: fragments overlap by this share of their length and are cross-faded
+  double crossfade = 0.5;          // > 0: fragments overlap by this share of their length and are cross-faded
   double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
   int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
+  bool root_drives = false;        // hierarchical: the keyed root's tilt always among the drivers
   double synthesized_driver_weight = 0.5;  // weight of already synthesised drivers (keyed = 1)
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)

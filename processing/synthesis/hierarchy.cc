@@ -73,7 +73,8 @@ std::vector<JointGroup> PlanGroups(const Skeleton& skeleton, const std::vector<s
 std::vector<DrivenChannel> ChooseDrivers(const MotionDatabase& db, const JointGroup& group,
                                          const std::vector<std::uint8_t>& joint_available,
                                          const std::vector<std::uint8_t>& joint_keyed, bool root_features_keyed,
-                                         int max_joints, double synthesized_weight, double root_feature_weight) {
+                                         int max_joints, double synthesized_weight, double root_feature_weight,
+                                         bool root_drives) {
   const CorrelationTable& table = db.correlation();
   const std::vector<int> targets = JointChannels(group.joints);
   struct Ranked {
@@ -91,6 +92,11 @@ std::vector<DrivenChannel> ChooseDrivers(const MotionDatabase& db, const JointGr
     const double weight = joint_keyed[j] ? 1.0 : synthesized_weight;
     if (weight > 0.0) ranked.push_back({j, corr * weight, weight});
   }
+  // The keyed motion root (pelvis tilt) leads when asked: it carries the upper body.
+  const int root = db.root_joint();
+  if (root_drives && root >= 0 && joint_keyed[root])
+    for (Ranked& r : ranked)
+      if (r.joint == root) r.score = 2.0;
   std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) { return a.score > b.score; });
   if (max_joints > 0 && static_cast<int>(ranked.size()) > max_joints) ranked.resize(max_joints);
   std::vector<DrivenChannel> driven;

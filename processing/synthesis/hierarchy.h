@@ -25,11 +25,13 @@ std::vector<JointGroup> PlanGroups(const Skeleton& skeleton, const std::vector<s
 // The driven set of a group: up to max_joints available joints (0 = all) ranked by their
 // strongest |correlation| with the group's channels in the database table times their weight
 // (keyed 1, synthesised `synthesized_weight`), plus the root features when they are keyed.
+// With root_drives a keyed motion root (its tilt) is always among the joints.
 // `joint_available` / `joint_keyed` are per joint; `root_features_keyed` per the sketch.
 std::vector<DrivenChannel> ChooseDrivers(const MotionDatabase& db, const JointGroup& group,
                                          const std::vector<std::uint8_t>& joint_available,
                                          const std::vector<std::uint8_t>& joint_keyed, bool root_features_keyed,
-                                         int max_joints, double synthesized_weight, double root_feature_weight);
+                                         int max_joints, double synthesized_weight, double root_feature_weight,
+                                         bool root_drives = false);
 
 // Channels (3 per joint) of a set of joints.
 std::vector<int> JointChannels(const std::vector<int>& joints);

@@ -1,0 +1,223 @@
+// Fill methods on real data: the embedded default database (fixtures/default_db, Bandai-Namco
+// locomotion of three styles) and the shipped sketch of a walk in a style it does not hold.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "formats/motion_io.h"
+#include "processing/core/rotation.h"
+#include "processing/evaluation/metrics.h"
+#include "processing/evaluation/sketch_maker.h"
+#include "processing/synthesis/assembly.h"
+#include "processing/synthesis/fill.h"
+#include "processing/synthesis/hierarchy.h"
+#include "processing/synthesis/sketch_signals.h"
+#include "processing/synthesis/skeleton_map.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kExactDeg = 1e-6;       // keys copied: only rounding
+constexpr double kKeyToleranceDeg = 0.5;  // issue #4 key fidelity after texturing
+
+const MotionDatabase& DefaultDb() {
+  static const MotionDatabase db = [] {
+    MotionDatabaseBuilder builder;
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(testing::FixturePath("default_db")))
+      if (e.path().extension() == ".bvh") files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    for (const std::string& f : files) {
+      Result<Scene> scene = ImportFile(f);
+      EXPECT_TRUE(scene.ok()) << scene.status().message();
+      EXPECT_TRUE(builder.Add(scene->skeleton, scene->clips[0], {{"file", f}}).ok());
+    }
+    Result<MotionDatabase> built = builder.Build();
+    EXPECT_TRUE(built.ok()) << built.status().message();
+    return std::move(*built);
+  }();
+  return db;
+}
+
+// The shipped glTF sketch in database joint order.
+MotionClip Sketch() {
+  Result<Scene> scene = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  EXPECT_TRUE(scene.ok()) << scene.status().message();
+  Result<SkeletonMapping> mapping = MapSkeletons(scene->skeleton, scene->clips[0], DefaultDb().skeleton(), {});
+  EXPECT_TRUE(mapping.ok()) << mapping.status().message();
+  return ToDatabaseClip(*mapping, DefaultDb().skeleton(), scene->clips[0]);
+}
+
+double MaxKeyErrorDeg(const MotionClip& sketch, const MotionClip& out) {
+  double worst = 0.0;
+  for (int j = 0; j < sketch.num_joints; ++j)
+    for (int f : sketch.keys[j].rotation_frames)
+      worst = std::max(worst, GeodesicAngle(sketch.rotation(f, j), out.rotation(f, j)) * kDegPerRad);
+  return worst;
+}
+
+TEST(FillOptions, ValidateRejectsEveryOutOfRangeField) {
+  EXPECT_TRUE(FillOptions{}.Validate().ok());
+  FillOptions o;
+  o.candidates = 0;
+  EXPECT_EQ(o.Validate().code(), ErrorCode::kInvalidArgument);
+  o = {};
+  o.blend = o.candidates + 1;
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
+  o.min_length_ratio = 1.5;
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
+  o.crossfade = -1;
+  EXPECT_FALSE(o.Validate().ok());
+  EXPECT_EQ(*ParseFillMethod("nn"), FillMethod::kNearest);
+  EXPECT_EQ(*ParseJoinCriterion("best-animation"), JoinCriterion::kBestAnimation);
+  EXPECT_FALSE(ParseFillMethod("magic").ok());
+}
+
+TEST(SketchFilter, LerpsBetweenKeysAndHoldsOutside) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(10, 1);
+  m(2, 0) = 1.0;
+  m(6, 0) = 3.0;
+  LerpBetweenKeys(m, {2, 6});
+  EXPECT_DOUBLE_EQ(m(0, 0), 1.0);
+  EXPECT_DOUBLE_EQ(m(4, 0), 2.0);
+  EXPECT_DOUBLE_EQ(m(9, 0), 3.0);
+  EXPECT_EQ(PhaseKeys(10, 4, 1), (std::vector<int>{0, 1, 5, 9}));
+  EXPECT_EQ(TextureBandCount(8, 30.0), 3);  // L0-L2 lie above 1.875 Hz
+}
+
+TEST(Hierarchy, GroupsBandaiUpperBodyIntoLimbChainsOutwardFromTheKeys) {
+  const Skeleton& skeleton = DefaultDb().skeleton();
+  std::vector<std::uint8_t> keyed(skeleton.num_joints(), 0);
+  for (const char* name : {"joint_Root", "Hips", "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L", "UpperLeg_R",
+                           "LowerLeg_R", "Foot_R", "Toes_R"})
+    keyed[*skeleton.Find(name)] = 1;
+  const std::vector<JointGroup> groups = PlanGroups(skeleton, keyed);
+  ASSERT_EQ(groups.size(), 4u);
+  EXPECT_EQ(groups[0].name, "Spine..Chest");
+  EXPECT_EQ(groups[0].distance, 1);
+  EXPECT_EQ(groups[1].name, "Neck..Head");
+  EXPECT_EQ(groups[2].name, "Shoulder_L..Hand_L");
+  EXPECT_EQ(groups[3].name, "Shoulder_R..Hand_R");
+  EXPECT_EQ(groups[3].distance, 3);
+}
+
+TEST(Fill, RejectsASketchWithoutKeys) {
+  MotionClip sketch = Sketch();
+  for (JointKeys& k : sketch.keys) k = JointKeys{};
+  FillEngine engine(DefaultDb());
+  EXPECT_EQ(engine.Fill(sketch, FillOptions{}).status().code(), ErrorCode::kInvalidData);
+}
+
+TEST(Fill, EveryMethodKeepsTheKeysAndMovesTheUpperBody) {
+  const MotionClip sketch = Sketch();
+  FillEngine engine(DefaultDb());
+  const int hand = *DefaultDb().skeleton().Find("Hand_R");
+  for (FillMethod method : {FillMethod::kMean, FillMethod::kNearest, FillMethod::kFragment, FillMethod::kHierarchical}) {
+    FillOptions options;
+    options.method = method;
+    Result<FillResult> r = engine.Fill(sketch, options);
+    ASSERT_TRUE(r.ok()) << r.status().message();
+    EXPECT_LT(MaxKeyErrorDeg(sketch, r->clip), kExactDeg) << FillMethodName(method);
+    double moved = 0.0;
+    for (int f = 1; f < sketch.num_frames; ++f)
+      moved = std::max(moved, GeodesicAngle(r->clip.rotation(f, hand), r->clip.rotation(0, hand)));
+    if (method == FillMethod::kMean) {
+      EXPECT_LT(moved, 1e-12);  // the mean pose does not move
+    } else {
+      EXPECT_GT(moved * kDegPerRad, 5.0) << FillMethodName(method);  // the arm swings
+    }
+  }
+}
+
+TEST(Fill, TexturingMovesKeyedJointsBetweenKeysAndRepinsTheKeys) {
+  const MotionClip sketch = Sketch();
+  FillEngine engine(DefaultDb());
+  FillOptions options;
+  options.texture = true;
+  Result<FillResult> r = engine.Fill(sketch, options);
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  EXPECT_LT(r->report.key_error_mean_deg, kKeyToleranceDeg);
+  EXPECT_LT(r->report.key_error_max_deg, 1e-3);  // re-pinned exactly up to rounding
+  const int knee = *DefaultDb().skeleton().Find("LowerLeg_L");
+  double moved = 0.0;
+  for (int f = 0; f < sketch.num_frames; ++f)
+    moved = std::max(moved, GeodesicAngle(sketch.rotation(f, knee), r->clip.rotation(f, knee)));
+  EXPECT_GT(moved * kDegPerRad, 0.1);  // texture added between keys
+}
+
+TEST(Fill, IsDeterministic) {
+  const MotionClip sketch = Sketch();
+  FillEngine a(DefaultDb()), b(DefaultDb());
+  FillOptions options;
+  const FillResult ra = *a.Fill(sketch, options);
+  options.threads = 1;  // the result must not depend on the thread count
+  const FillResult rb = *b.Fill(sketch, options);
+  for (size_t i = 0; i < ra.clip.rotations.size(); ++i)
+    ASSERT_EQ(ra.clip.rotations[i].coeffs(), rb.clip.rotations[i].coeffs()) << i;
+}
+
+TEST(Fill, EveryJointKeyedEveryFrameIsLeftUnchangedWithoutTexture) {
+  MotionClip sketch = Sketch();
+  FillEngine engine(DefaultDb());
+  FillOptions options;
+  options.method = FillMethod::kMean;
+  const MotionClip dense = engine.Fill(sketch, options)->clip;  // any complete clip
+  sketch = dense;
+  sketch.KeyAllFrames();
+  for (FillMethod method : {FillMethod::kFragment, FillMethod::kHierarchical}) {
+    options.method = method;
+    Result<FillResult> r = engine.Fill(sketch, options);
+    ASSERT_TRUE(r.ok()) << r.status().message();
+    for (size_t i = 0; i < sketch.rotations.size(); ++i) {
+      ASSERT_EQ(r->clip.rotations[i].coeffs(), sketch.rotations[i].coeffs()) << i;
+      ASSERT_EQ(r->clip.translations[i], sketch.translations[i]) << i;
+    }
+  }
+}
+
+TEST(Fill, CostMatrixJoinsWithNoMoreSeamsThanBestFragment) {
+  const MotionClip sketch = Sketch();
+  FillEngine engine(DefaultDb());
+  FillOptions options;
+  std::map<JoinCriterion, int> seams;
+  for (JoinCriterion join : {JoinCriterion::kBestFragment, JoinCriterion::kCostMatrix, JoinCriterion::kBestAnimation}) {
+    options.join = join;
+    Result<FillResult> r = engine.Fill(sketch, options);
+    ASSERT_TRUE(r.ok()) << r.status().message();
+    seams[join] = r->report.seams;
+    EXPECT_EQ(r->report.join, JoinCriterionName(join));
+  }
+  EXPECT_LT(seams[JoinCriterion::kCostMatrix], seams[JoinCriterion::kBestFragment]);
+  EXPECT_LE(seams[JoinCriterion::kBestAnimation], seams[JoinCriterion::kBestFragment]);
+}
+
+TEST(Fill, HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<Scene> truth = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_002.bvh"));
+  ASSERT_TRUE(truth.ok());
+  const MotionClip sketch = Sketch();
+  FillEngine engine(DefaultDb());
+  std::map<FillMethod, double> mpjpe;
+  for (FillMethod method : {FillMethod::kMean, FillMethod::kHierarchical}) {
+    FillOptions options;
+    options.method = method;
+    Result<FillResult> r = engine.Fill(sketch, options);
+    ASSERT_TRUE(r.ok());
+    Result<FillMetrics> m = ScoreFill(DefaultDb().skeleton(), truth->clips[0], sketch, r->clip, DefaultDb().root_joint());
+    ASSERT_TRUE(m.ok()) << m.status().message();
+    mpjpe[method] = m->mpjpe_unkeyed_cm;
+    EXPECT_LT(m->bone_length_error, 1e-9);
+  }
+  // Measured 9.27 vs 10.52 cm (12% lower) with the 21-clip default database; the full
+  // 174-clip database gains more (docs/fill.md).
+  EXPECT_LT(mpjpe[FillMethod::kHierarchical], 0.92 * mpjpe[FillMethod::kMean])
+      << "hierarchical " << mpjpe[FillMethod::kHierarchical] << " cm, mean " << mpjpe[FillMethod::kMean] << " cm";
+}
+
+}  // namespace
+}  // namespace mocapfill
