@@ -211,9 +211,12 @@ Result<PcaModel> ParsePcaModel(std::string_view bytes) {
                        std::to_string(kPcaFileVersion) + ")");
   if (Load<std::uint32_t>(bytes, 12) != kHeaderSize) return InvalidData("bad header size");
   const auto payload_size = Load<std::uint64_t>(bytes, 16);
-  if (payload_size != bytes.size() - kHeaderSize)
+  const std::uint64_t present = bytes.size() - kHeaderSize;
+  if (payload_size > present)
     return InvalidData("truncated: header declares " + std::to_string(payload_size) + " payload bytes, file has " +
-                       std::to_string(bytes.size() - kHeaderSize));
+                       std::to_string(present));
+  if (payload_size < present)
+    return InvalidData(std::to_string(present - payload_size) + " unexpected bytes after the declared payload");
   const std::string_view payload = bytes.substr(kHeaderSize);
   if (Hash(payload) != Load<std::uint64_t>(bytes, 24)) return InvalidData("checksum mismatch (file corrupted)");
   PcaModel model;

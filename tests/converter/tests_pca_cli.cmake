@@ -1,0 +1,7 @@
+# `mocapfill pca` verbs (issue #5); edited glTF goes to test-output/pca for the validator.
+mocapfill_add_test(pca_cli_tests
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/pca_cli_test.cc
+    ${CMAKE_CURRENT_LIST_DIR}/../processing/pca_test_data.cc
+  LIBS mocapfill_mfdb mocapfill_formats nlohmann_json::nlohmann_json)
+add_dependencies(pca_cli_tests mocapfill)

@@ -1,0 +1,6 @@
+# The .pca model file (issue #5).
+mocapfill_add_test(pcafile_tests
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/pca_file_test.cc
+    ${CMAKE_CURRENT_LIST_DIR}/../processing/pca_test_data.cc
+  LIBS mocapfill_pcafile mocapfill_pca mocapfill_mfdb mocapfill_formats)
