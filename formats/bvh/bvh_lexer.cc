@@ -25,22 +25,6 @@ bool EqualsIgnoreCase(std::string_view a, std::string_view b) {
 
 BvhLexer::BvhLexer(std::string_view text, std::string_view path) : text_(text), path_(path) {}
 
-TextLocation BvhLexer::LocationOf(size_t position) const {
-  if (position >= line_start_ && position <= text_.size())
-    return {line_, static_cast<int64_t>(position - line_start_) + 1};
-  // Only error paths ask about earlier lines, so counting from the start is fine.
-  TextLocation where;
-  size_t start = 0;
-  for (size_t i = 0; i < position && i < text_.size(); ++i) {
-    if (text_[i] == '\n' || (text_[i] == '\r' && (i + 1 >= text_.size() || text_[i + 1] != '\n'))) {
-      ++where.line;
-      start = i + 1;
-    }
-  }
-  where.column = static_cast<int64_t>(position - start) + 1;
-  return where;
-}
-
 void BvhLexer::SkipWhitespace() {
   while (pos_ < text_.size()) {
     const char c = text_[pos_];

@@ -30,7 +30,6 @@ class BvhLexer {
   size_t remaining_bytes() const { return text_.size() - pos_; }
   std::string_view TextFromHere() const { return text_.substr(pos_); }
   TextLocation Here() const { return {line_, static_cast<int64_t>(pos_ - line_start_) + 1}; }
-  TextLocation LocationOf(size_t position) const;  // valid for positions on the current line
 
   // Skips spaces and tabs, staying on the current line.
   void SkipBlanks() {
