@@ -8,23 +8,38 @@ namespace mocapfill {
 
 namespace {
 
-// Seam cost between candidate fragments a (before) and b (after).
-double Transition(const JoinInputs& in, const DbFragment& a, const DbFragment& b) {
-  if (Continues(a, b)) return 0.0;
+// The target channels at both ends of a candidate, normalised by their spread: values and
+// one-frame slopes, so a seam cost is a few vector operations.
+struct Ends {
+  Eigen::VectorXd start, start_slope, end, end_slope;
+};
+
+Ends CandidateEnds(const JoinInputs& in, const DbFragment& g) {
   const Eigen::MatrixXf& s = in.db->signals();
-  const ClipRange& ca = in.db->clip(a.clip);
-  const ClipRange& cb = in.db->clip(b.clip);
-  const int ea = ca.first_frame + a.last, sb = cb.first_frame + b.first;
-  const int ea0 = ca.first_frame + std::max(0, a.last - 1);
-  const int sb1 = cb.first_frame + std::min(cb.num_frames - 1, b.first + 1);
-  double cost = 0.0;
-  for (int c : in.target_channels) {
-    const double sigma2 = double(in.channel_sigma[c]) * in.channel_sigma[c];
-    const double jump = s(ea, c) - s(sb, c);
-    const double slope = (s(ea, c) - s(ea0, c)) - (s(sb1, c) - s(sb, c));
-    cost += (jump * jump + in.gamma * slope * slope) / sigma2;
+  const ClipRange& clip = in.db->clip(g.clip);
+  const int first = clip.first_frame + g.first, last = clip.first_frame + g.last;
+  const int before_last = clip.first_frame + std::max(0, g.last - 1);
+  const int after_first = clip.first_frame + std::min(clip.num_frames - 1, g.first + 1);
+  const int n = static_cast<int>(in.target_channels.size());
+  Ends e{Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  for (int i = 0; i < n; ++i) {
+    const int c = in.target_channels[i];
+    const double inv = 1.0 / in.channel_sigma[c];
+    e.start[i] = s(first, c) * inv;
+    e.start_slope[i] = (s(after_first, c) - s(first, c)) * inv;
+    e.end[i] = s(last, c) * inv;
+    e.end_slope[i] = (s(last, c) - s(before_last, c)) * inv;
   }
-  return in.target_channels.empty() ? 0.0 : cost / in.target_channels.size();
+  return e;
+}
+
+// Seam cost between candidate fragments a (before) and b (after): mean over target channels of
+// the normalised jump plus gamma times the normalised slope change.
+double Transition(const JoinInputs& in, const DbFragment& a, const Ends& ea, const DbFragment& b, const Ends& eb) {
+  if (Continues(a, b) || in.target_channels.empty()) return 0.0;
+  const double jump = (ea.end - eb.start).squaredNorm();
+  const double slope = (ea.end_slope - eb.start_slope).squaredNorm();
+  return (jump + in.gamma * slope) / in.target_channels.size();
 }
 
 std::vector<int> Greedy(const JoinInputs& in) { return std::vector<int>(in.candidates->size(), 0); }
@@ -39,13 +54,17 @@ std::vector<int> Viterbi(const JoinInputs& in) {
   cost[0].resize(cands[0].size());
   for (size_t c = 0; c < cands[0].size(); ++c) cost[0][c] = cands[0][c].distance;
   const auto& frags = in.mdb->fragments();
+  std::vector<std::vector<Ends>> ends(n);
+  for (size_t i = 0; i < n; ++i)
+    for (const Candidate& c : cands[i]) ends[i].push_back(CandidateEnds(in, frags[c.fragment]));
   for (size_t i = 1; i < n; ++i) {
     cost[i].assign(cands[i].size(), std::numeric_limits<double>::infinity());
     back[i].assign(cands[i].size(), 0);
     for (size_t c = 0; c < cands[i].size(); ++c) {
       const DbFragment& to = frags[cands[i][c].fragment];
       for (size_t p = 0; p < cands[i - 1].size(); ++p) {
-        const double v = cost[i - 1][p] + Transition(in, frags[cands[i - 1][p].fragment], to);
+        const double v = cost[i - 1][p] + Transition(in, frags[cands[i - 1][p].fragment], ends[i - 1][p], to,
+                                                     ends[i][c]);
         if (v < cost[i][c]) {
           cost[i][c] = v;
           back[i][c] = static_cast<int>(p);

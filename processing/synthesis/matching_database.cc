@@ -21,16 +21,16 @@ std::vector<int> PhasesToBuild(int spacing, int wanted) {
   return phases;
 }
 
-// Sketch filter of the keyed columns of one clip at one phase.
-void FilterKeyed(Eigen::MatrixXd& block, const std::vector<std::uint8_t>& keyed, int num_joints,
+// Sketch filter of one clip's keyed columns (block column k holds channel columns[k]) at one phase.
+void FilterKeyed(Eigen::MatrixXd& block, const std::vector<int>& columns, int num_joints,
                  const std::vector<int>& keys) {
-  for (int c = 0; c < block.cols(); ++c) {
-    if (!keyed[c]) continue;
+  for (int k = 0; k < block.cols(); ++k) {
+    const int c = columns[k];
     const bool velocity = c >= 3 * num_joints && IsRootVelocityFeature(c - 3 * num_joints);
     if (velocity) {
-      IntervalMeanBetweenKeys(block.middleCols(c, 1), keys);
+      IntervalMeanBetweenKeys(block.middleCols(k, 1), keys);
     } else {
-      LerpBetweenKeys(block.middleCols(c, 1), keys);
+      LerpBetweenKeys(block.middleCols(k, 1), keys);
     }
   }
 }
@@ -105,34 +105,52 @@ Result<MatchingDatabase> MatchingDatabase::Build(const MotionDatabase& db, const
   m.context_ = options.context_fraction;
   const int channels = db.num_channels(), nj = db.num_joints();
   const double rate = db.rate_hz();
-  std::vector<int> all_columns(channels);
-  for (int c = 0; c < channels; ++c) all_columns[c] = c;
   const std::vector<int> phases = PhasesToBuild(sketch.key_spacing, options.db_phases);
   const int row_size = options.match_samples * channels;
 
+  // Only the keyed columns differ between phases; the others are sampled from the clip as captured.
+  std::vector<int> keyed_columns, keyed_index(channels, -1);
+  for (int c = 0; c < channels; ++c)
+    if (sketch.keyed[c]) {
+      keyed_index[c] = static_cast<int>(keyed_columns.size());
+      keyed_columns.push_back(c);
+    }
+  const int master_column = keyed_index[master_channel];
   std::vector<ClipOutput> outputs(db.num_clips());
   auto work_clip = [&](int i) {
     ClipOutput& out = outputs[i];
     const Eigen::MatrixXd raw = db.ClipRows(db.signals(), i).cast<double>();
-    const Eigen::MatrixXd raw_match = MatchingSignal(raw, rate, options);
+    const int n = static_cast<int>(raw.rows());
+    const Eigen::MatrixXf raw_match = MatchingSignal(raw, rate, options).cast<float>();
+    Eigen::MatrixXd keyed_raw(n, keyed_columns.size());
+    for (size_t k = 0; k < keyed_columns.size(); ++k) keyed_raw.col(k) = raw.col(keyed_columns[k]);
     for (int phase : phases) {
-      Eigen::MatrixXd filtered = raw;
-      FilterKeyed(filtered, sketch.keyed, nj, PhaseKeys(static_cast<int>(raw.rows()), sketch.key_spacing, phase));
-      Result<std::vector<Phase>> cuts = FindPhases(BandOf(filtered.col(master_channel), rate, fragment_band), rate);
+      Eigen::MatrixXd filtered = keyed_raw;
+      FilterKeyed(filtered, keyed_columns, nj, PhaseKeys(n, sketch.key_spacing, phase));
+      const Eigen::VectorXd master = master_column >= 0 ? Eigen::VectorXd(filtered.col(master_column))
+                                                        : Eigen::VectorXd(raw.col(master_channel));
+      Result<std::vector<Phase>> cuts = FindPhases(BandOf(master, rate, fragment_band), rate);
       if (!cuts.ok()) {
         out.status = cuts.status().WithContext("database clip '" + db.clip(i).name + "'");
         return;
       }
-      Eigen::MatrixXf match = raw_match.cast<float>();
-      const Eigen::MatrixXd filtered_match = MatchingSignal(filtered, rate, options);
-      for (int c = 0; c < channels; ++c)
-        if (sketch.keyed[c]) match.col(c) = filtered_match.col(c).cast<float>();
+      const Eigen::MatrixXf filtered_match = MatchingSignal(filtered, rate, options).cast<float>();
       for (const Phase& cut : *cuts) {
         out.fragments.push_back({i, phase, cut.first, cut.last, cut.rising});
         double wa, wb;
         MatchingWindow(cut.first, cut.last, options.context_fraction, wa, wb);
         out.features.resize(out.features.size() + row_size);
-        SampleWindow(match, wa, wb, options.match_samples, all_columns, out.features.data() + out.features.size() - row_size);
+        float* row = out.features.data() + out.features.size() - row_size;
+        for (int s = 0; s < options.match_samples; ++s) {
+          const double t = std::clamp(wa + (wb - wa) * s / (options.match_samples - 1), 0.0, double(n - 1));
+          const int a = std::min(static_cast<int>(t), n - 1), b = std::min(a + 1, n - 1);
+          const float u = static_cast<float>(t - a);
+          for (int c = 0; c < channels; ++c) {
+            const int k = keyed_index[c];
+            row[s * channels + c] = k >= 0 ? (1.0f - u) * filtered_match(a, k) + u * filtered_match(b, k)
+                                           : (1.0f - u) * raw_match(a, c) + u * raw_match(b, c);
+          }
+        }
       }
     }
   };
