@@ -30,7 +30,15 @@ std::vector<std::string> CorpusFiles(const std::string& folder, const std::strin
 }
 
 std::string ScratchDir(const std::string& test_name) {
-  const fs::path dir = fs::path(MOCAPFILL_BINARY_DIR) / "test-scratch" / test_name;
+  // ctest runs tests in parallel processes: tests sharing a scratch name (a fixture's SetUp)
+  // must not clear each other's files, so the running test's own name is appended.
+  fs::path dir = fs::path(MOCAPFILL_BINARY_DIR) / "test-scratch" / test_name;
+  if (const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
+    std::string unique = std::string(info->test_suite_name()) + "." + info->name();
+    for (char& c : unique)
+      if (c == '/') c = '_';
+    dir /= unique;
+  }
   std::error_code ec;
   fs::remove_all(dir, ec);
   fs::create_directories(dir, ec);
