@@ -189,6 +189,11 @@ void AddPcaCommand(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<PcaArgs>();
   CLI::App* pca = app.add_subcommand("pca", "Build, inspect and apply PCA models of a motion database");
   pca->require_subcommand(1);
+  pca->footer(
+      "Examples:\n"
+      "  mocapfill pca build --db bn1.mfdb -o walk.pca --labels walk\n"
+      "  mocapfill pca info walk.pca --json\n"
+      "  mocapfill pca edit walk.glb -o out.glb --model walk.pca --component 1=+2.0");
 
   CLI::App* build = pca->add_subcommand("build", "Build a PCA model of (some behaviours of) a database");
   build->add_option("--db", args->db, "Database: an .mfdb file or motion files/folders (default: embedded)");
