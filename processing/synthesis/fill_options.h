@@ -46,11 +46,11 @@ struct FillOptions {
   double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
   double max_length_ratio = 1.5;
   double seam_window_s = 0.25;     // seam smoothing reach on each side
-  double crossfade = 0.5;          // > 0: fragments overlap by this share of their length and are cross-faded
+  double crossfade = 1.0;          // > 0: fragments overlap by this share of their length and are cross-faded
   double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
   int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
   bool root_drives = false;        // hierarchical: the keyed root's tilt always among the drivers
-  double synthesized_driver_weight = 0.5;  // weight of already synthesised drivers (keyed = 1)
+  double synthesized_driver_weight = 1.0;  // weight of already synthesised drivers (keyed = 1)
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
