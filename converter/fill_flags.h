@@ -11,7 +11,7 @@ namespace mocapfill::cli {
 // Raw text of the enum flags, parsed after CLI11 is done so errors read as ours.
 struct FillFlagText {
   std::string join = "cost-matrix";
-  std::string texture = "off";
+  std::string texture = "on";
   std::string match = "lowpass";
 };
 

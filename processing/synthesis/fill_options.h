@@ -35,7 +35,7 @@ struct FillOptions {
   FillMethod method = FillMethod::kHierarchical;
   JoinCriterion join = JoinCriterion::kCostMatrix;
   MatchSignal match_signal = MatchSignal::kLowPass;
-  bool texture = false;     // add the chosen fragments' high bands to keyed channels
+  bool texture = true;      // add the chosen fragments' high bands to keyed channels
   bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
   int candidates = 128;     // K best candidates kept per fragment
   int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)

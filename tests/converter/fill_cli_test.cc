@@ -55,12 +55,12 @@ TEST(FillCli, FillsTheGltfSketchFromTheDefaultDatabaseWithAReport) {
   EXPECT_EQ(json["method"], "hierarchical");
   EXPECT_EQ(json["key_spacing_frames"], 8);
   EXPECT_LT(json["key_error_mean_deg"].get<double>(), kKeyToleranceDeg);
-  int synthesized = 0, keyed = 0;
+  int synthesized = 0, textured = 0;
   for (const auto& joint : json["joints"]) {
     if (joint["kind"] == "synthesized") ++synthesized;
-    if (joint["kind"] == "keyed") ++keyed;
+    if (joint["kind"] == "textured") ++textured;
   }
-  EXPECT_EQ(keyed, 9);         // root and legs
+  EXPECT_EQ(textured, 9);      // root and legs, textured by default
   EXPECT_EQ(synthesized, 13);  // upper body and the static joint_Root
   ASSERT_GT(json["fragments"].size(), 10u);
   EXPECT_NE(json["fragments"][0]["clip"].get<std::string>().find("dataset-1_"), std::string::npos);
@@ -96,7 +96,7 @@ TEST(FillCli, SameBytesTwice) {
 }
 
 TEST(FillCli, EveryJoiningCriterionAndMethodRuns) {
-  for (const char* flags : {"--join best-fragment", "--join cost-matrix", "--join best-animation --texture on",
+  for (const char* flags : {"--join best-fragment", "--join cost-matrix --texture off", "--join best-animation",
                             "--method mean", "--method nn"}) {
     std::string file;
     for (const char* c = flags; *c; ++c)

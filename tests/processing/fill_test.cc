@@ -120,6 +120,7 @@ TEST(Fill, EveryMethodKeepsTheKeysAndMovesTheUpperBody) {
   for (FillMethod method : {FillMethod::kMean, FillMethod::kNearest, FillMethod::kFragment, FillMethod::kHierarchical}) {
     FillOptions options;
     options.method = method;
+    options.texture = false;  // keyed joints copied exactly
     Result<FillResult> r = engine.Fill(sketch, options);
     ASSERT_TRUE(r.ok()) << r.status().message();
     EXPECT_LT(MaxKeyErrorDeg(sketch, r->clip), kExactDeg) << FillMethodName(method);
@@ -165,6 +166,7 @@ TEST(Fill, EveryJointKeyedEveryFrameIsLeftUnchangedWithoutTexture) {
   MotionClip sketch = Sketch();
   FillEngine engine(DefaultDb());
   FillOptions options;
+  options.texture = false;
   options.method = FillMethod::kMean;
   const MotionClip dense = engine.Fill(sketch, options)->clip;  // any complete clip
   sketch = dense;
