@@ -136,6 +136,31 @@ TEST(FillCli, RenamedSkeletonNeedsAMap) {
   EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
+TEST(EvalCli, LeaveOneStyleOutOnTheDefaultDatabaseScoresEveryMethod) {
+  const RunResult run = RunCli("-q eval --db " + testing::FixturePath("default_db") +
+                               " --contents run --methods mean,hierarchical --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  EXPECT_EQ(json["protocol"]["folds"], 3);  // normal, happy, tired
+  ASSERT_EQ(json["clips"].size(), 6u);      // 3 run clips x 2 methods
+  double mean_cm = 0.0, hierarchical_cm = 0.0;
+  for (const auto& row : json["summary"]) {
+    if (row["category"] != "all") continue;
+    EXPECT_EQ(row["clips"], 3);
+    EXPECT_LT(row["metrics"]["bone_length_error"].get<double>(), 1e-9);
+    EXPECT_LT(row["metrics"]["key_error_max_deg"].get<double>(), 1e-3);
+    (row["method"] == "mean" ? mean_cm : hierarchical_cm) = row["metrics"]["mpjpe_unkeyed_cm"].get<double>();
+  }
+  EXPECT_GT(mean_cm, 5.0);  // the mean pose misses the arm swing by centimetres
+  EXPECT_LT(hierarchical_cm, mean_cm);
+}
+
+TEST(EvalCli, UnknownMethodIsAUsageError) {
+  const RunResult run = RunCli("eval --db " + testing::FixturePath("default_db") + " --methods magic");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("unknown method 'magic'"), std::string::npos) << run.output;
+}
+
 TEST(FillCli, RejectsASketchWithoutAnimation) {
   const std::string out = testing::ScratchDir("fill_noanim") + "/out.glb";
   const RunResult run = RunCli("fill " + testing::FixturePath("gltf/quad_skin.glb") + " -o " + out);
