@@ -258,7 +258,7 @@ Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions&
   } else {
     RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, s, options, out, report, timer));
   }
-  timer.Mark(fragment_based ? "assemble" : "match");
+  timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;
   ASSIGN_OR_RETURN(result.clip, Compose(db_, s, out, sketch, textured));
   ReportJoints(db_, s, sketch, result.clip, textured, report);
