@@ -48,7 +48,8 @@ std::vector<int> Viterbi(const JoinInputs& in) {
   const auto& cands = *in.candidates;
   const size_t n = cands.size();
   std::vector<int> path(n, 0);
-  if (n == 0) return path;
+  for (const std::vector<Candidate>& c : cands)
+    if (c.empty()) return path;  // a fragment without candidates: nothing to choose anywhere
   std::vector<std::vector<double>> cost(n);
   std::vector<std::vector<int>> back(n);
   cost[0].resize(cands[0].size());
