@@ -2,6 +2,7 @@
 // truth clips, filled by each method against a database without the clip's fold, scored,
 // printed as a table (or JSON).
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -165,11 +166,13 @@ int RunEval(EvalArgs& args) {
     if (!saved.ok()) return Fail(saved, Stage::kOutput);
     return kExitOk;
   }
-  options.on_clip_done = [](int done, int total) {
-    if (!IsQuiet()) std::fprintf(stderr, "\rscored %d/%d clips", done, total);
+  std::unique_ptr<Progress> progress;  // drawn on a terminal only
+  options.on_clip_done = [&progress](int done, int total) {
+    if (!progress) progress = std::make_unique<Progress>("scoring", total);
+    progress->Advance();
   };
   Result<EvaluationResult> result = RunLeaveOneOut(*clips, options);
-  if (!IsQuiet()) std::fprintf(stderr, "\n");
+  progress.reset();
   if (!result.ok()) {
     PrintError(result.status().message());
     return ExitCodeFor(result.status(), Stage::kProcessing);
