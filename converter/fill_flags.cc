@@ -1,5 +1,7 @@
 #include "converter/fill_flags.h"
 
+#include <algorithm>
+
 namespace mocapfill::cli {
 
 void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
@@ -12,7 +14,7 @@ void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
   command.add_option("--candidates", options.candidates, "K best database fragments kept per sketch fragment")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
-  command.add_option("--blend", options.blend, "Candidates averaged per fragment (1 = the joined one alone)")
+  command.add_option("--blend", options.blend, "Candidates averaged per fragment (1 = the joined one alone; at most --candidates)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   command.add_option("--match", text.match, "Matching signal: lowpass (sketch-filtered curves) or band (band-pass only)")
@@ -55,7 +57,7 @@ Status ApplyFillFlagText(const FillFlagText& text, FillOptions& options) {
   ASSIGN_OR_RETURN(options.join, ParseJoinCriterion(text.join));
   options.texture = text.texture == "on";
   options.match_signal = text.match == "band" ? MatchSignal::kBand : MatchSignal::kLowPass;
-  if (options.blend > options.candidates) options.candidates = options.blend;
+  options.blend = std::min(options.blend, options.candidates);  // a smaller K caps the blend
   return OkStatus();
 }
 
