@@ -53,10 +53,11 @@ TEST(Cli, VersionAndHelpForEveryVerb) {
   RunResult version = RunCli("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_NE(version.output.find("mocapfill "), std::string::npos);
-  for (const char* verb : {"convert", "inspect"}) {
+  for (const char* verb : {"convert", "inspect", "db build", "db info", "filter", "analyze", "fill", "eval",
+                           "pca build", "pca info", "pca edit"}) {
     RunResult help = RunCli(std::string(verb) + " --help");
     EXPECT_EQ(help.exit_code, 0) << verb;
-    EXPECT_NE(help.output.find("Examples:"), std::string::npos) << verb << ": " << help.output;
+    EXPECT_NE(help.output.find("Example"), std::string::npos) << verb << ": " << help.output;
   }
   EXPECT_NE(RunCli("--help").output.find("Exit codes"), std::string::npos);
 }
