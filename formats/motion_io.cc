@@ -1,6 +1,6 @@
 #include "formats/motion_io.h"
 
-#include "formats/assimp/assimp_reader.h"
+#include "formats/assimp/assimp_loader.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/bvh/bvh_writer.h"
 #include "formats/file_io.h"
@@ -33,7 +33,7 @@ bool IsExportExtension(const std::string& path) {
 
 Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) {
   const std::string ext = LowerExtension(path);
-  if (IsAssimpExtension(ext)) return ReadWithAssimp(path, options);
+  if (IsAssimpExtension(ext)) return ReadWithAssimpModule(path, options);
   if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
     return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
   ASSIGN_OR_RETURN(std::string bytes, ReadFileBytes(path));

@@ -1,6 +1,6 @@
 // Accessor reading with every bound checked before a byte is touched: tinygltf 2.7 does
 // not verify that accessors fit their buffer views or views their buffers.
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <algorithm>
 #include <cstring>

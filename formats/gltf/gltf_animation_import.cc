@@ -1,6 +1,6 @@
 // glTF animations to MotionClips: sampler checks, frame-rate choice, resampling onto the
 // frame grid, keyed frames.
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <algorithm>
 #include <cmath>

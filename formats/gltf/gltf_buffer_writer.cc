@@ -1,4 +1,4 @@
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include "formats/gltf/gltf_export_internal.h"
 

@@ -1,11 +1,12 @@
 // Internal to formats/gltf: pieces of the writer shared between its .cc files. tinygltf
-// stays out of headers; the model is only forward-declared here.
+// stays out of headers; the model is only forward-declared here (under its private name).
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
 #include "processing/core/scene.h"
+#include "formats/gltf/tinygltf_name.h"
 #include "processing/core/status.h"
 
 namespace tinygltf {

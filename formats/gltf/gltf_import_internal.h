@@ -1,5 +1,5 @@
 // Internal to formats/gltf: the reader's stages over a model loaded by tinygltf. tinygltf
-// stays out of headers; the model is only forward-declared here.
+// stays out of headers; the model is only forward-declared here (under its private name).
 #pragma once
 
 #include <Eigen/Core>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "processing/core/scene.h"
+#include "formats/gltf/tinygltf_name.h"
 #include "processing/core/status.h"
 
 namespace tinygltf {

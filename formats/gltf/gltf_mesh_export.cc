@@ -1,5 +1,5 @@
 // Meshes, materials and skins of the glTF writer.
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <algorithm>
 #include <map>

@@ -1,5 +1,5 @@
 // Meshes and skins of a glTF scene into Scene::meshes / Scene::skins.
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -2,7 +2,7 @@
 // and animations stages (gltf_*_import.cc), units/axes and provenance.
 #include "formats/gltf/gltf_reader.h"
 
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <cmath>
 #include <filesystem>

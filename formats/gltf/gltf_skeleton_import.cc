@@ -1,5 +1,5 @@
 // Node graph checks and skeleton selection for the glTF reader.
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

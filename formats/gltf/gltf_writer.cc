@@ -2,7 +2,7 @@
 // and skins, provenance in asset.extras.mocapfill. Serialised by tinygltf into memory.
 #include "formats/gltf/gltf_writer.h"
 
-#include <tiny_gltf.h>
+#include "formats/gltf/tinygltf_private.h"
 
 #include <filesystem>
 #include <sstream>

@@ -21,9 +21,10 @@ struct RunResult {
   std::string output;  // stdout and stderr together
 };
 
-RunResult RunCli(const std::string& args) {
+// Runs `exe args` with `env` ("NAME=value ...", may be empty) in its environment.
+RunResult RunProgram(const std::string& env, const std::string& exe, const std::string& args) {
   RunResult result;
-  const std::string command = testing::MocapfillExe() + " " + args + " 2>&1";
+  const std::string command = env + " " + exe + " " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   std::array<char, 4096> buffer;
@@ -33,6 +34,8 @@ RunResult RunCli(const std::string& args) {
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
+
+RunResult RunCli(const std::string& args) { return RunProgram("", testing::MocapfillExe(), args); }
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
@@ -162,6 +165,59 @@ TEST(Cli, InspectJsonDescribesTheClip) {
     EXPECT_NEAR(json["clips"][0]["duration_s"].get<double>(),
                 (json["clips"][0]["frames"].get<int>() - 1) / json["clips"][0]["rate_hz"].get<double>(), 1e-9);
   }
+}
+
+// FBX is read by the Assimp plug-in (mocapfill_assimp.so), loaded only for Assimp formats.
+TEST(Cli, FbxIsReadThroughTheAssimpPlugin) {
+  const std::string fbx = testing::FixturePath("fbx/animation_with_skeleton.fbx");
+  RunResult r = RunCli("inspect --json " + Quote(fbx));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto json = nlohmann::json::parse(r.output);
+  EXPECT_EQ(json["format"], "fbx");
+  EXPECT_GT(json["skeleton"]["joints"].get<int>(), 1);
+  const std::string dir = testing::ScratchDir("cli_fbx");
+  ASSERT_EQ(RunCli("convert " + Quote(fbx) + " " + Quote(dir + "/out.glb")).exit_code, 0);
+  EXPECT_EQ(ReadAll(dir + "/out.glb").substr(0, 4), "glTF");
+}
+
+TEST(Cli, MissingAssimpPluginIsAClearErrorAndBvhNeedsNone) {
+  const std::string dir = testing::ScratchDir("cli_no_plugin");
+  const std::string env = "MOCAPFILL_ASSIMP_MODULE=" + Quote(dir + "/missing.so");
+  RunResult r = RunProgram(env, testing::MocapfillExe(),
+                           "convert " + Quote(testing::FixturePath("fbx/pivot_chain.fbx")) + " " + Quote(dir + "/out.glb"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("pivot_chain.fbx"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mocapfill_assimp.so"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(dir + "/missing.so"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out.glb"));
+  RunResult bvh = RunProgram(env, testing::MocapfillExe(),
+                             "convert " + Quote(FixtureBvhFiles().at(0)) + " " + Quote(dir + "/bvh.glb"));
+  EXPECT_EQ(bvh.exit_code, 0) << bvh.output;
+}
+
+// Installed layout: <prefix>/bin/mocapfill finds <prefix>/lib/mocapfill/mocapfill_assimp.so,
+// and a BVH conversion maps neither the plug-in nor libassimp (the dynamic linker's own
+// report of every file it loads says so).
+TEST(Cli, PluginIsFoundInTheInstalledLayoutAndOnlyLoadedForAssimpFormats) {
+  const std::string prefix = testing::ScratchDir("cli_installed");
+  fs::create_directories(prefix + "/bin");
+  fs::create_directories(prefix + "/lib/mocapfill");
+  const fs::path built = testing::MocapfillExe();
+  fs::copy_file(built, prefix + "/bin/mocapfill");
+  fs::copy_file(built.parent_path() / "mocapfill_assimp.so", prefix + "/lib/mocapfill/mocapfill_assimp.so");
+  const std::string exe = Quote(prefix + "/bin/mocapfill");
+  RunResult fbx = RunProgram("LD_DEBUG=files", exe,
+                             "convert " + Quote(testing::FixturePath("fbx/pivot_chain.fbx")) + " " +
+                                 Quote(prefix + "/fbx.glb"));
+  ASSERT_EQ(fbx.exit_code, 0) << fbx.output;
+  EXPECT_NE(fbx.output.find("file=" + prefix + "/lib/mocapfill/mocapfill_assimp.so"), std::string::npos)
+      << fbx.output;
+  RunResult bvh = RunProgram("LD_DEBUG=files", exe,
+                             "convert " + Quote(FixtureBvhFiles().at(0)) + " " + Quote(prefix + "/bvh.glb"));
+  ASSERT_EQ(bvh.exit_code, 0) << bvh.output;
+  EXPECT_NE(bvh.output.find("file="), std::string::npos) << "no loader report: " << bvh.output;
+  EXPECT_EQ(bvh.output.find("mocapfill_assimp"), std::string::npos) << bvh.output;
+  EXPECT_EQ(bvh.output.find("libassimp"), std::string::npos) << bvh.output;
 }
 
 }  // namespace

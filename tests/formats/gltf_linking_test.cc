@@ -2,8 +2,10 @@
 // names as Debian's libtinygltf 2.7 with a different class layout. Whichever library
 // comes first in an executable's NEEDED list wins every tinygltf call, and calls landing
 // in draco's copy crashed (LoadBinaryFromFile) or misread fields (the fs callbacks).
-// mocapfill_gltf puts libtinygltf first; this binary links libdraco ahead of everything
-// (tests_gltf.cmake), so it checks that the fix holds in the worst case.
+// mocapfill_gltf compiles in its own copy under a private namespace name; the test support
+// code here calls Debian's libtinygltf, which mocapfill_test_tinygltf (tests/CMakeLists.txt)
+// puts first. This binary links libdraco ahead of everything (tests_gltf.cmake), so it
+// checks that the fix holds in the worst case.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 

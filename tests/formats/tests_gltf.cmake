@@ -3,8 +3,9 @@
 # provides real motion (fixtures/bvh) for round trips.
 #
 # libdraco (pulled in by Assimp) exports an older tinygltf under the same symbol names.
-# It is linked first here, the worst case, so that gltf_linking_test.cc and every reader
-# test prove that mocapfill_gltf still binds its tinygltf calls to libtinygltf.
+# It is linked first here, the worst case, so that every reader test proves mocapfill_gltf's
+# privately named copy is unaffected, and gltf_linking_test.cc that the test support's
+# calls into Debian's libtinygltf still bind to libtinygltf.
 set(MOCAPFILL_GLTF_TEST_DRACO "")
 if(TARGET draco::draco)
   set(MOCAPFILL_GLTF_TEST_DRACO draco::draco)
@@ -18,4 +19,4 @@ mocapfill_add_test(gltf_tests
           ${CMAKE_CURRENT_LIST_DIR}/gltf_bvh_fixture_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_linking_test.cc
   LIBS ${MOCAPFILL_GLTF_TEST_DRACO} mocapfill_gltf mocapfill_format_common mocapfill_bvh
-       nlohmann_json::nlohmann_json TinyGLTF::TinyGLTF)
+       nlohmann_json::nlohmann_json mocapfill_test_tinygltf)
