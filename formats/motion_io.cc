@@ -43,11 +43,17 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
 
 Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options) {
   const std::string ext = LowerExtension(path);
+  if (ext == ".glb") {
+    Result<GlbFile> glb = WriteGlb(scene, options);
+    if (!glb.ok()) return glb.status().WithContext(path);
+    const std::string_view bin(reinterpret_cast<const char*>(glb->bin.data()), glb->bin.size());
+    return WriteFileAtomicParts(path, {glb->head, bin});
+  }
   Result<std::string> bytes = Status();
   if (ext == ".bvh") {
     bytes = WriteBvh(scene, options);
-  } else if (ext == ".gltf" || ext == ".glb") {
-    bytes = WriteGltf(scene, ext == ".glb", options);
+  } else if (ext == ".gltf") {
+    bytes = WriteGltf(scene, false, options);
   } else {
     return InvalidArgument(path + ": unknown output extension '" + ext + "' (expected .gltf, .glb or .bvh)");
   }

@@ -17,6 +17,21 @@ int BufferWriter::AddView(const void* data, size_t size, int target) {
   return static_cast<int>(model_.bufferViews.size()) - 1;
 }
 
+void BufferWriter::Reserve(size_t bytes) { bytes_.reserve(bytes_.size() + bytes + 3); }
+
+float* BufferWriter::AddFloatView(size_t count, int& view) {
+  bytes_.resize((bytes_.size() + 3) / 4 * 4, 0);
+  const size_t offset = bytes_.size();
+  tinygltf::BufferView buffer_view;
+  buffer_view.buffer = 0;
+  buffer_view.byteOffset = offset;
+  buffer_view.byteLength = count * sizeof(float);
+  bytes_.resize(offset + count * sizeof(float));
+  model_.bufferViews.push_back(std::move(buffer_view));
+  view = static_cast<int>(model_.bufferViews.size()) - 1;
+  return reinterpret_cast<float*>(bytes_.data() + offset);  // 4-byte aligned: offset % 4 == 0
+}
+
 int BufferWriter::AddAccessor(int view, size_t byte_offset, int component_type, int type, size_t count,
                               const std::vector<double>& min, const std::vector<double>& max) {
   tinygltf::Accessor accessor;
@@ -38,6 +53,13 @@ void BufferWriter::Finish() {
   buffer.data = std::move(bytes_);
   model_.buffers.push_back(std::move(buffer));
   bytes_.clear();
+}
+
+std::vector<unsigned char> BufferWriter::TakeBinaryChunk() {
+  bytes_.resize((bytes_.size() + 3) / 4 * 4, 0);
+  std::vector<unsigned char> bytes = std::move(bytes_);
+  bytes_.clear();
+  return bytes;
 }
 
 }  // namespace mocapfill::gltf_internal

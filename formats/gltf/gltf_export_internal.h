@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "processing/core/scene.h"
@@ -22,9 +23,16 @@ class BufferWriter {
  public:
   explicit BufferWriter(tinygltf::Model& model) : model_(model) {}
 
+  // Room for `bytes` more bytes, so that large animations are not copied while they grow.
+  void Reserve(size_t bytes);
+
   // Appends `size` bytes as a new buffer view; `target` is 0 (animation, skin data),
   // 34962 (vertex attributes) or 34963 (indices). Returns the view index.
   int AddView(const void* data, size_t size, int target = 0);
+
+  // Appends a view of `count` floats for the caller to fill in place (no staging copy);
+  // the pointer is valid until the next Add*. Sets `view` to the view index.
+  float* AddFloatView(size_t count, int& view);
 
   // Adds an accessor over `view` at `byte_offset`; min/max only when given.
   int AddAccessor(int view, size_t byte_offset, int component_type, int type, size_t count,
@@ -32,6 +40,10 @@ class BufferWriter {
 
   // Pads the bytes to a multiple of 4 and stores them as buffers[0] (if any were added).
   void Finish();
+
+  // For .glb: pads the bytes to a multiple of 4 and hands them over (the binary chunk);
+  // the model gets no buffer entry (GlbJson writes it).
+  std::vector<unsigned char> TakeBinaryChunk();
 
  private:
   tinygltf::Model& model_;
@@ -43,5 +55,11 @@ class BufferWriter {
 // validator warns about anything else); rigid meshes become children of their joint's
 // node. Root-level mesh nodes are appended to `scene_roots`.
 Status ExportMeshes(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model, std::vector<int>& scene_roots);
+
+// The JSON chunk of a .glb whose binary chunk holds `bin_bytes` bytes: the same bytes
+// tinygltf's WriteGltfSceneToStream writes (it is tinygltf's serialiser; see
+// tinygltf_impl.cc), without copying the binary buffer into the model and a stream.
+// The model must have no buffers and no images.
+std::string GlbJson(const tinygltf::Model& model, size_t bin_bytes);
 
 }  // namespace mocapfill::gltf_internal

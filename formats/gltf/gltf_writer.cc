@@ -1,9 +1,12 @@
 // glTF export: joints as nodes, one animation per clip on a shared time accessor, meshes
-// and skins, provenance in asset.extras.mocapfill. Serialised by tinygltf into memory.
+// and skins, provenance in asset.extras.mocapfill. The model is tinygltf's; .gltf is
+// serialised by tinygltf, .glb by tinygltf's JSON serialiser with the binary chunk kept
+// apart (GlbFile), so that a large animation is written straight from where it was built.
 #include "formats/gltf/gltf_writer.h"
 
 #include "formats/gltf/tinygltf_private.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <sstream>
 
@@ -46,32 +49,46 @@ void AddJointNodes(const Skeleton& skeleton, tinygltf::Model& model) {
 }
 
 // Frame times as float32 (computed in double, then rounded), strictly increasing.
-Result<std::vector<float>> FrameTimes(const MotionClip& clip) {
-  std::vector<float> times(clip.num_frames);
+Status FrameTimes(const MotionClip& clip, float* times) {
   for (int f = 0; f < clip.num_frames; ++f) {
     times[f] = static_cast<float>(f / clip.sample_rate_hz);
     if (f > 0 && times[f] <= times[f - 1])
       return Unsupported("clip '" + clip.name + "': frame times " + Str(f - 1) + " and " + Str(f) +
                          " are equal in float32; the clip is too long for its frame rate");
   }
-  return times;
+  return OkStatus();
 }
 
 // Unit quaternions (x, y, z, w) as float32, normalised after rounding (the validator checks
-// float lengths) and kept on one hemisphere from frame to frame.
-std::vector<float> RotationOutput(const MotionClip& clip, int joint) {
-  std::vector<float> out(static_cast<size_t>(clip.num_frames) * 4);
-  Eigen::Vector4d previous = Eigen::Vector4d::Zero();
-  for (int f = 0; f < clip.num_frames; ++f) {
-    const Eigen::Quaterniond& q = clip.rotation(f, joint);
-    Eigen::Vector4d v = Eigen::Vector4d(q.x(), q.y(), q.z(), q.w()).normalized();
-    if (v.dot(previous) < 0) v = -v;
-    previous = v;
-    const Eigen::Vector4d rounded = v.cast<float>().cast<double>();
-    const Eigen::Vector4f unit = (rounded / rounded.norm()).cast<float>();
-    for (int c = 0; c < 4; ++c) out[4 * f + c] = unit[c];
+// float lengths) and kept on one hemisphere from frame to frame; joint j's track starts
+// at out + 4 j n. Walked frame by frame, the order the clip stores them in.
+void WriteRotations(const MotionClip& clip, float* out) {
+  const size_t n = clip.num_frames, joints = clip.num_joints;
+  std::vector<Eigen::Vector4d> previous(joints, Eigen::Vector4d::Zero());
+  for (size_t f = 0; f < n; ++f) {
+    for (size_t j = 0; j < joints; ++j) {
+      const Eigen::Quaterniond& q = clip.rotations[f * joints + j];
+      Eigen::Vector4d v = Eigen::Vector4d(q.x(), q.y(), q.z(), q.w()).normalized();
+      if (v.dot(previous[j]) < 0) v = -v;
+      previous[j] = v;
+      const Eigen::Vector4d rounded = v.cast<float>().cast<double>();
+      const Eigen::Vector4f unit = (rounded / rounded.norm()).cast<float>();
+      float* o = out + 4 * (j * n + f);
+      for (int c = 0; c < 4; ++c) o[c] = unit[c];
+    }
   }
-  return out;
+}
+
+// Translations of the `moving` joints as float32; the k-th joint's track starts at out + 3 k n.
+void WriteTranslations(const MotionClip& clip, const std::vector<int>& moving, float* out) {
+  const size_t n = clip.num_frames;
+  for (size_t f = 0; f < n; ++f) {
+    for (size_t k = 0; k < moving.size(); ++k) {
+      const Eigen::Vector3d& t = clip.translation(static_cast<int>(f), moving[k]);
+      float* o = out + 3 * (k * n + f);
+      for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(t[c]);
+    }
+  }
 }
 
 void AddSampledChannel(tinygltf::Animation& animation, int input, int output, int node, const char* path) {
@@ -87,29 +104,25 @@ void AddSampledChannel(tinygltf::Animation& animation, int input, int output, in
   animation.channels.push_back(std::move(channel));
 }
 
+// One shared time accessor, then every joint's rotations, then the animated translations,
+// each written straight into the binary buffer.
 Status AddAnimation(const MotionClip& clip, BufferWriter& buffer, tinygltf::Model& model) {
-  ASSIGN_OR_RETURN(const std::vector<float> times, FrameTimes(clip));
-  const int time_view = buffer.AddView(times.data(), times.size() * sizeof(float));
-  const int input = buffer.AddAccessor(time_view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, times.size(),
-                                       {times.front()}, {times.back()});
   const size_t n = clip.num_frames;
-  std::vector<float> rotations;
-  rotations.reserve(n * 4 * clip.num_joints);
-  for (int j = 0; j < clip.num_joints; ++j) {
-    const std::vector<float> r = RotationOutput(clip, j);
-    rotations.insert(rotations.end(), r.begin(), r.end());
-  }
-  const int rotation_view = buffer.AddView(rotations.data(), rotations.size() * sizeof(float));
   std::vector<int> moving;
-  std::vector<float> translations;
-  for (int j = 0; j < clip.num_joints; ++j) {
-    if (!clip.translation_animated[j]) continue;
-    moving.push_back(j);
-    for (size_t f = 0; f < n; ++f)
-      for (int c = 0; c < 3; ++c) translations.push_back(static_cast<float>(clip.translation(f, j)[c]));
-  }
-  const int translation_view =
-      moving.empty() ? -1 : buffer.AddView(translations.data(), translations.size() * sizeof(float));
+  for (int j = 0; j < clip.num_joints; ++j)
+    if (clip.translation_animated[j]) moving.push_back(j);
+  buffer.Reserve(n * sizeof(float) * (1 + 4 * static_cast<size_t>(clip.num_joints) + 3 * moving.size()) + 8);
+
+  int time_view = -1;
+  float* times = buffer.AddFloatView(n, time_view);
+  RETURN_IF_ERROR(FrameTimes(clip, times));
+  const double first_s = times[0], last_s = times[n - 1];
+  const int input = buffer.AddAccessor(time_view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, n, {first_s},
+                                       {last_s});
+  int rotation_view = -1;
+  WriteRotations(clip, buffer.AddFloatView(n * 4 * clip.num_joints, rotation_view));
+  int translation_view = -1;
+  if (!moving.empty()) WriteTranslations(clip, moving, buffer.AddFloatView(n * 3 * moving.size(), translation_view));
 
   tinygltf::Animation animation;
   animation.name = clip.name;
@@ -196,17 +209,13 @@ Status CheckExportable(const Scene& scene) {
   return OkStatus();
 }
 
-}  // namespace
-
-Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptions& options) {
+// Everything but the buffer: nodes, meshes and skins, animations, scene, asset.
+Status BuildModel(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model) {
   RETURN_IF_ERROR(CheckExportable(scene));
-  tinygltf::Model model;
-  BufferWriter buffer(model);
   AddJointNodes(scene.skeleton, model);
   std::vector<int> roots = scene.skeleton.Roots();
   RETURN_IF_ERROR(gltf_internal::ExportMeshes(scene, buffer, model, roots));
   for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(AddAnimation(clip, buffer, model));
-  buffer.Finish();
 
   tinygltf::Scene gltf_scene;
   gltf_scene.nodes = roots;
@@ -215,10 +224,65 @@ Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptio
   model.asset.generator = "mocapfill";
   model.asset.version = "2.0";
   model.asset.extras = ProvenanceExtras(scene);
+  return OkStatus();
+}
 
+void AppendU32(std::string& out, uint32_t v) {
+  const char bytes[4] = {static_cast<char>(v), static_cast<char>(v >> 8), static_cast<char>(v >> 16),
+                         static_cast<char>(v >> 24)};
+  out.append(bytes, 4);
+}
+
+// The glb header, the JSON chunk (padded with spaces) and the binary chunk's header,
+// exactly as tinygltf's WriteBinaryGltfStream lays them out.
+Result<std::string> GlbHead(const std::string& json, size_t bin_bytes) {
+  const size_t json_padding = (4 - json.size() % 4) % 4;
+  const size_t total = 12 + 8 + json.size() + json_padding + (bin_bytes > 0 ? 8 + bin_bytes : 0);
+  if (total > UINT32_MAX) return Unsupported("the .glb would be larger than 4 GiB, the format's limit; write .gltf");
+  std::string head;
+  head.reserve(28 + json.size() + json_padding);
+  head.append("glTF", 4);
+  AppendU32(head, 2);
+  AppendU32(head, static_cast<uint32_t>(total));
+  AppendU32(head, static_cast<uint32_t>(json.size() + json_padding));
+  AppendU32(head, 0x4E4F534A);  // "JSON"
+  head += json;
+  head.append(json_padding, ' ');
+  if (bin_bytes > 0) {
+    AppendU32(head, static_cast<uint32_t>(bin_bytes));
+    AppendU32(head, 0x004E4942);  // "BIN\0"
+  }
+  return head;
+}
+
+}  // namespace
+
+Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options) {
+  tinygltf::Model model;
+  BufferWriter buffer(model);
+  RETURN_IF_ERROR(BuildModel(scene, buffer, model));
+  GlbFile file;
+  file.bin = buffer.TakeBinaryChunk();  // padded to 4 bytes, so the chunk needs no padding
+  ASSIGN_OR_RETURN(file.head, GlbHead(gltf_internal::GlbJson(model, file.bin.size()), file.bin.size()));
+  return file;
+}
+
+Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptions& options) {
+  if (binary) {
+    ASSIGN_OR_RETURN(const GlbFile glb, WriteGlb(scene, options));
+    std::string bytes;
+    bytes.reserve(glb.head.size() + glb.bin.size());
+    bytes += glb.head;
+    bytes.append(reinterpret_cast<const char*>(glb.bin.data()), glb.bin.size());
+    return bytes;
+  }
+  tinygltf::Model model;
+  BufferWriter buffer(model);
+  RETURN_IF_ERROR(BuildModel(scene, buffer, model));
+  buffer.Finish();
   tinygltf::TinyGLTF writer;
   std::ostringstream out;
-  if (!writer.WriteGltfSceneToStream(&model, out, options.pretty, binary) || !out)
+  if (!writer.WriteGltfSceneToStream(&model, out, options.pretty, false) || !out)
     return Internal("tinygltf could not serialise the glTF model");
   return out.str();
 }

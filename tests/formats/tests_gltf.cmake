@@ -18,5 +18,6 @@ mocapfill_add_test(gltf_tests
           ${CMAKE_CURRENT_LIST_DIR}/gltf_keyframes_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_bvh_fixture_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_linking_test.cc
-  LIBS ${MOCAPFILL_GLTF_TEST_DRACO} mocapfill_gltf mocapfill_format_common mocapfill_bvh
+          ${CMAKE_CURRENT_LIST_DIR}/gltf_glb_writer_test.cc
+  LIBS ${MOCAPFILL_GLTF_TEST_DRACO} mocapfill_gltf mocapfill_formats mocapfill_format_common mocapfill_bvh
        nlohmann_json::nlohmann_json mocapfill_test_tinygltf)

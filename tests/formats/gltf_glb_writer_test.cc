@@ -1,0 +1,108 @@
+// The .glb writer hands the file over in two pieces (WriteGlb: header and JSON chunk, then
+// the binary chunk) so that ExportFile writes the animation from where it was built. The
+// pieces must be exactly the file tinygltf itself would write: same framing, same JSON.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+
+#include "formats/file_io.h"
+#include "formats/gltf/gltf_writer.h"
+#include "formats/motion_io.h"
+#include "tests/formats/gltf_test_support.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+uint32_t U32At(const std::string& bytes, size_t offset) {
+  uint32_t v = 0;
+  std::memcpy(&v, bytes.data() + offset, 4);
+  return v;
+}
+
+std::string Joined(const GlbFile& glb) {
+  return glb.head + std::string(reinterpret_cast<const char*>(glb.bin.data()), glb.bin.size());
+}
+
+// Loads `glb` with Debian's libtinygltf and writes it back as .glb with the same library.
+std::string RewrittenByLibtinygltf(const std::string& glb) {
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string error, warning;
+  EXPECT_TRUE(loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(glb.data()),
+                                          static_cast<unsigned>(glb.size())))
+      << error;
+  std::ostringstream out;
+  EXPECT_TRUE(loader.WriteGltfSceneToStream(&model, out, false, true));
+  return out.str();
+}
+
+void ExpectConsistentGlb(const GlbFile& glb) {
+  const std::string file = Joined(glb);
+  ASSERT_GE(file.size(), 20u);
+  EXPECT_EQ(file.substr(0, 4), "glTF");
+  EXPECT_EQ(U32At(file, 4), 2u);
+  EXPECT_EQ(U32At(file, 8), file.size());
+  const uint32_t json_length = U32At(file, 12);
+  EXPECT_EQ(U32At(file, 16), 0x4E4F534Au);
+  EXPECT_EQ(json_length % 4, 0u);
+  const nlohmann::json json = nlohmann::json::parse(file.substr(20, json_length));
+  EXPECT_EQ(glb.bin.size() % 4, 0u);
+  if (glb.bin.empty()) {
+    EXPECT_EQ(glb.head.size(), file.size());
+    EXPECT_FALSE(json.contains("buffers"));
+    return;
+  }
+  EXPECT_EQ(glb.head.size(), 20u + json_length + 8u);
+  EXPECT_EQ(U32At(file, 20 + json_length), glb.bin.size());
+  EXPECT_EQ(U32At(file, 24 + json_length), 0x004E4942u);
+  ASSERT_EQ(json["buffers"].size(), 1u);
+  EXPECT_EQ(json["buffers"][0]["byteLength"].get<size_t>(), glb.bin.size());
+}
+
+TEST(GlbWriter, PiecesFormTheFileLibtinygltfWrites) {
+  const Scene scene = testing::MakeDancerScene();  // skeleton, clips, meshes and skins
+  Result<GlbFile> glb = WriteGlb(scene, {});
+  ASSERT_TRUE(glb.ok()) << glb.status().message();
+  ExpectConsistentGlb(*glb);
+  Result<std::string> whole = WriteGltf(scene, true, {});
+  ASSERT_TRUE(whole.ok());
+  EXPECT_EQ(*whole, Joined(*glb));
+  EXPECT_EQ(RewrittenByLibtinygltf(*whole), *whole);
+}
+
+TEST(GlbWriter, ExportFileWritesThePieces) {
+  const std::string bvh_path = testing::FixturePath("sketches/walk_proud_002_legs8.bvh");
+  Result<Scene> scene = ImportFile(bvh_path);
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  Result<GlbFile> glb = WriteGlb(*scene, {});
+  ASSERT_TRUE(glb.ok()) << glb.status().message();
+  ExpectConsistentGlb(*glb);
+  const std::string path = testing::GltfOutputPath("walk_proud_002_legs8_pieces.glb");
+  ASSERT_TRUE(ExportFile(*scene, path).ok());
+  Result<std::string> written = ReadFileBytes(path);
+  ASSERT_TRUE(written.ok());
+  EXPECT_EQ(*written, Joined(*glb));
+  EXPECT_EQ(RewrittenByLibtinygltf(*written), *written);
+}
+
+TEST(GlbWriter, SkeletonWithoutClipsHasNoBinaryChunk) {
+  Scene scene = testing::MakeDancerScene();
+  scene.clips.clear();
+  scene.meshes.clear();
+  scene.skins.clear();
+  Result<GlbFile> glb = WriteGlb(scene, {});
+  ASSERT_TRUE(glb.ok()) << glb.status().message();
+  EXPECT_TRUE(glb->bin.empty());
+  ExpectConsistentGlb(*glb);
+  Result<std::string> whole = WriteGltf(scene, true, {});
+  ASSERT_TRUE(whole.ok());
+  EXPECT_EQ(*whole, glb->head);
+}
+
+}  // namespace
+}  // namespace mocapfill
