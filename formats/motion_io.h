@@ -23,6 +23,10 @@ struct ImportOptions {
   std::string animation;
   // Promote recoverable warnings (e.g. a BVH frame-count mismatch) to errors.
   bool strict = false;
+  // Threads that may work on this one file: 0 = the reader decides (a large BVH motion
+  // section is parsed on two), 1 = the calling thread only (for callers that already
+  // spread many files over the cores). The result is the same either way.
+  int threads = 0;
 };
 
 struct ExportOptions {

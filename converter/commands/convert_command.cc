@@ -35,14 +35,15 @@ struct Job {
 };
 
 // Converts one file; returns the exit code and prints any error.
-int ConvertOne(const Job& job, const ConvertArgs& args, const std::vector<std::string>& all_inputs) {
+int ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import,
+               const std::vector<std::string>& all_inputs) {
   for (const std::string& in : all_inputs) {
     if (IsSameFile(in, job.output) || fs::path(in).lexically_normal() == fs::path(job.output).lexically_normal()) {
       PrintError(job.output + ": refusing to overwrite input file");
       return kExitOutput;
     }
   }
-  Result<Scene> scene = ImportFile(job.input, args.import);
+  Result<Scene> scene = ImportFile(job.input, import);
   if (!scene.ok()) {
     PrintError(scene.status().message());
     return ExitCodeFor(scene.status(), Stage::kInput);
@@ -93,11 +94,14 @@ int RunConvert(const ConvertArgs& args) {
   std::vector<int> codes(jobs.size(), kExitOk);
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   const size_t workers = std::min<size_t>(jobs.size(), args.jobs > 0 ? args.jobs : hardware);
+  // Files spread over the workers already keep the cores busy: each is read on one thread.
+  ImportOptions import = args.import;
+  if (workers > 1) import.threads = 1;
   Progress progress("converting", jobs.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
     for (size_t i = next++; i < jobs.size(); i = next++) {
-      codes[i] = ConvertOne(jobs[i], args, args.inputs);
+      codes[i] = ConvertOne(jobs[i], args, import, args.inputs);
       progress.Advance();
     }
   };

@@ -8,25 +8,14 @@
 #include <vector>
 
 #include "formats/bvh/bvh_euler.h"
+#include "formats/bvh/bvh_motion_parallel.h"
+#include "formats/bvh/bvh_motion_rows.h"
 #include "formats/bvh/bvh_number.h"
 #include "processing/core/rotation.h"
 
 namespace mocapfill::bvh {
 
-namespace {
-
-// Upper bound on frames x joints (about 6 GB of transforms): a tiny hierarchy with many
-// joints but few channels could otherwise make a small file expand without limit.
-constexpr size_t kMaxJointFrames = size_t{100'000'000};
-
-// Where one joint's values sit in a motion row (absolute indices, -1 when absent).
-struct JointSampler {
-  std::array<int, 3> rotation_index{-1, -1, -1};
-  std::array<int, 3> position_index{-1, -1, -1};
-  int num_rotations = 0;
-  EulerComposer compose = nullptr;
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-};
+namespace rows {
 
 std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
   std::vector<JointSampler> samplers;
@@ -45,50 +34,12 @@ std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
   return samplers;
 }
 
-// Position channels replace the OFFSET component they name; rotation channels compose
-// intrinsically in listed order (unlisted axes contribute nothing).
-// Each rotation is flipped to the previous frame's hemisphere here, while both are in
-// cache, instead of in a strided pass over the clip afterwards.
-void AppendFrame(const std::vector<JointSampler>& samplers, const double* row, MotionClip& clip) {
-  const size_t joints = samplers.size();
-  for (const JointSampler& s : samplers) {
-    Eigen::Vector3d t = s.offset;
-    for (int a = 0; a < 3; ++a)
-      if (s.position_index[a] >= 0) t[a] = row[s.position_index[a]];
-    clip.translations.push_back(t);
-    if (s.num_rotations == 0) {
-      clip.rotations.push_back(Eigen::Quaterniond::Identity());
-      continue;
-    }
-    std::array<double, 3> angles_deg{};
-    for (int i = 0; i < 3; ++i)
-      if (s.rotation_index[i] >= 0) angles_deg[i] = row[s.rotation_index[i]];
-    Eigen::Quaterniond q = s.compose(angles_deg);
-    const size_t index = clip.rotations.size();
-    if (index >= joints && q.coeffs().dot(clip.rotations[index - joints].coeffs()) < 0.0) q.coeffs() = -q.coeffs();
-    clip.rotations.push_back(q);
-  }
-}
+}  // namespace rows
 
-struct RowEnd {
-  enum Kind { kComplete, kShort, kBadValue, kLong } kind;
-  int values;  // parsed before stopping
-};
+namespace {
 
-// Reads one row of `channels` values from p (which must start a non-blank line), leaving
-// p at the line end, or where the row went wrong.
-RowEnd ScanRow(const char*& p, const char* end, double* row, int channels) {
-  for (int c = 0; c < channels; ++c) {
-    while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    if (p == end || *p == '\n' || *p == '\r') return {RowEnd::kShort, c};
-    const char* next = ParseNumber(p, end, row[c]);
-    if (next == nullptr || !IsFiniteNumber(row[c])) return {RowEnd::kBadValue, c};
-    p = next;
-  }
-  while (p < end && (*p == ' ' || *p == '\t')) ++p;
-  if (p < end && *p != '\n' && *p != '\r') return {RowEnd::kLong, channels};
-  return {RowEnd::kComplete, channels};
-}
+using rows::RowEnd;
+using rows::kMaxJointFrames;
 
 std::string FrameCounts(int64_t frame, const MotionHeader& header) {
   return "frame " + std::to_string(frame) + " (0-based; " + std::to_string(frame) + " complete of " +
@@ -169,28 +120,34 @@ Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer) {
 }
 
 Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const MotionHeader& header,
-                       MotionClip& clip) {
+                       MotionClip& clip, int threads) {
   const int channels = hierarchy.num_channels;
-  const std::vector<JointSampler> samplers = MakeSamplers(hierarchy);
-  clip.num_joints = static_cast<int>(samplers.size());
+  const std::vector<rows::JointSampler> samplers = rows::MakeSamplers(hierarchy);
+  const size_t joints = samplers.size();
+  clip.num_joints = static_cast<int>(joints);
+  if (threads != 1 && lexer.remaining_bytes() >= kParallelMotionMinBytes) {
+    if (ParseMotionRowsInParallel(lexer.TextFromHere(), samplers, channels, header.declared_frames, clip))
+      return OkStatus();
+    clip.rotations.clear();
+    clip.translations.clear();
+  }
   // Reserve for the declared frames, but never more than the rest of the file can hold
   // (every value takes at least two bytes), so "Frames: 1000000000" cannot exhaust memory.
   const size_t max_rows = lexer.remaining_bytes() / (2 * static_cast<size_t>(channels)) + 1;
-  const size_t reserve_rows =
-      std::min({static_cast<size_t>(header.declared_frames), max_rows, kMaxJointFrames / samplers.size()});
-  clip.rotations.reserve(reserve_rows * samplers.size());
-  clip.translations.reserve(reserve_rows * samplers.size());
+  const size_t reserve_rows = std::min({static_cast<size_t>(header.declared_frames), max_rows, kMaxJointFrames / joints});
+  clip.rotations.reserve(reserve_rows * joints);
+  clip.translations.reserve(reserve_rows * joints);
 
   std::vector<double> row(channels);
   int64_t frame = 0;
   while (true) {
     lexer.SkipWhitespace();  // line breaks and blank lines between rows
     if (lexer.AtEnd()) break;
-    if (static_cast<size_t>(frame + 1) * samplers.size() > kMaxJointFrames)
+    if (static_cast<size_t>(frame + 1) * joints > kMaxJointFrames)
       return lexer.ErrorAt(lexer.Here(), "the motion is too large: more than " + std::to_string(frame) +
-                                             " frames of " + std::to_string(samplers.size()) + " joints");
+                                             " frames of " + std::to_string(joints) + " joints");
     const char* p = lexer.cursor();
-    const RowEnd end = ScanRow(p, lexer.text_end(), row.data(), channels);
+    const RowEnd end = rows::ScanRow(p, lexer.text_end(), row.data(), channels);
     lexer.MoveWithinLine(p);
     switch (end.kind) {
       case RowEnd::kComplete:
@@ -202,7 +159,11 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
       case RowEnd::kLong:
         return RowTooLong(lexer, frame, channels);
     }
-    AppendFrame(samplers, row.data(), clip);
+    const size_t base = clip.rotations.size();
+    clip.rotations.resize(base + joints);  // Eigen's constructors leave the new entries alone
+    clip.translations.resize(base + joints);
+    rows::ComposeFrame(samplers, row.data(), base >= joints ? &clip.rotations[base - joints] : nullptr,
+                       &clip.rotations[base], &clip.translations[base]);
     ++frame;
   }
   clip.num_frames = static_cast<int>(frame);

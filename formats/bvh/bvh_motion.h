@@ -25,7 +25,9 @@ Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer);
 // Parses every frame row up to the end of the text into `clip` (rotations, already
 // hemisphere-continuous, and translations in file units; num_frames and num_joints set). A row that ends early, holds
 // too many values, or a value that is not a finite number is an error with line:col.
+// `threads` as ImportOptions::threads: other than 1, large motion sections are parsed on
+// two threads (bvh_motion_parallel.h), with the same result.
 Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const MotionHeader& header,
-                       MotionClip& clip);
+                       MotionClip& clip, int threads = 0);
 
 }  // namespace mocapfill::bvh

@@ -128,7 +128,7 @@ Result<Scene> ReadBvh(std::string_view text, const std::string& path, const Impo
   MotionClip clip;
   clip.name = ClipName(path);
   clip.sample_rate_hz = bvh::SnapFrameRate(header.frame_time_s);
-  RETURN_IF_ERROR(bvh::ParseMotionRows(lexer, hierarchy, header, clip));
+  RETURN_IF_ERROR(bvh::ParseMotionRows(lexer, hierarchy, header, clip, options.threads));
   RETURN_IF_ERROR(CheckFrameCount(header, clip.num_frames, path, options.strict, scene.warnings));
   ASSIGN_OR_RETURN(scene.skeleton, BuildSkeleton(hierarchy, path));
 

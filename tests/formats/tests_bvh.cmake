@@ -7,4 +7,5 @@ mocapfill_add_test(bvh_tests
           ${CMAKE_CURRENT_LIST_DIR}/bvh_bad_input_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_writer_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_corpus_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bvh_parallel_test.cc
   LIBS mocapfill_bvh)

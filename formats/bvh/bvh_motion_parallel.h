@@ -1,0 +1,28 @@
+// The MOTION rows of a large BVH file parsed on two threads: the text is split at a line
+// break near its middle, the rows before the split are counted, and each half is parsed
+// straight into its own frames of the clip. The result is bit-identical to the serial
+// loop's. Anything irregular (a bad row, rows that do not fit the declared frame count,
+// unusual line breaks) makes it give up, and the serial loop parses the file again and
+// reports the exact error or warning.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "formats/bvh/bvh_motion_rows.h"
+#include "processing/core/motion_clip.h"
+
+namespace mocapfill::bvh {
+
+// Motion text smaller than this is parsed on the calling thread: starting a thread costs
+// more than it saves.
+inline constexpr size_t kParallelMotionMinBytes = size_t{128} << 10;
+
+// Parses every row of `rows_text` (the text after the Frame Time line) into `clip`
+// (rotations, translations, num_frames). Returns false, with the clip's arrays in an
+// unspecified state, when the serial loop must do it instead.
+bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<rows::JointSampler>& samplers,
+                               int channels, int64_t declared_frames, MotionClip& clip);
+
+}  // namespace mocapfill::bvh
