@@ -167,6 +167,9 @@ Result<PcaSketchFit> FitSketchToKeys(const PcaModel& model, const Skeleton& skel
     problem.guide_mask = ChannelMask::Constant(sketch.num_frames, model.pose_dim(), true);
     for (int m : keyed) problem.guide_mask.middleCols<3>(3 * m) = false;
     if (model.num_root_features > 0) problem.guide_mask.rightCols(model.num_root_features) = false;
+    // Positions decide the chains they key: a guide there would pull the feet off their keys.
+    for (const PositionKey& key : problem.position_keys)
+      for (int m = key.joint; m >= 0; m = binding.model_parents[m]) problem.guide_mask.middleCols<3>(3 * m) = false;
   }
   out.encode_s = Seconds(start);
   if (options.full_pose) {

@@ -59,7 +59,8 @@ struct PcaSketchFit {
 };
 
 // Fits the model to the sketch's keys. `guide` (optional, same skeleton, frame count and
-// rate as the sketch) pulls unkeyed joints towards it. Errors: as FillMissingJointsPca,
+// rate as the sketch) pulls unkeyed joints towards it, except joints on the chain from the
+// root to a position-keyed joint (the position keys decide those). Errors: as FillMissingJointsPca,
 // plus unknown joint names or out-of-range frames in position keys, and FitPcaToKeys /
 // FitFullPoseToKeys errors.
 Result<PcaSketchFit> FitSketchToKeys(const PcaModel& model, const Skeleton& skeleton, const MotionClip& sketch,

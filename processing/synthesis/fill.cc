@@ -7,6 +7,7 @@
 #include "processing/filtering/pyramid.h"
 #include "processing/synthesis/assembly.h"
 #include "processing/synthesis/baselines.h"
+#include "processing/synthesis/fill_stages.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/hierarchy.h"
 #include "processing/synthesis/joining.h"
@@ -14,29 +15,6 @@
 #include "processing/synthesis/sketch_signals.h"
 
 namespace mocapfill {
-
-namespace {
-
-class StageTimer {
- public:
-  explicit StageTimer(FillReport& report) : report_(report), start_(std::chrono::steady_clock::now()) {}
-  // Records the time since the previous mark under `stage` (summed when repeated).
-  void Mark(const std::string& stage) {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - start_).count();
-    start_ = now;
-    for (StageTime& t : report_.stages)
-      if (t.stage == stage) {
-        t.seconds += s;
-        return;
-      }
-    report_.stages.push_back({stage, s});
-  }
-
- private:
-  FillReport& report_;
-  std::chrono::steady_clock::time_point start_;
-};
 
 // Per joint: 1 when the fill must not change it (keyed, or an ancestor of the motion root,
 // whose transform ComposeClip takes from the sketch).
@@ -48,6 +26,8 @@ std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSign
     fixed[p] = 1;
   return fixed;
 }
+
+namespace {
 
 bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s) {
   return db.root_joint() >= 0 && s.num_channels() > 3 * db.num_joints() && s.keyed[3 * db.num_joints()];
@@ -185,8 +165,9 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   return OkStatus();
 }
 
-// Signals -> clip; keyed joints that were not textured keep the sketch's exact rotations.
-Result<MotionClip> Compose(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
+}  // namespace
+
+Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
                            const MotionClip& sketch, bool textured) {
   ClipSignals signals = s.raw;
   signals.tangent = out.leftCols(3 * db.num_joints());
@@ -208,6 +189,8 @@ Result<MotionClip> Compose(const MotionDatabase& db, const SketchSignals& s, con
 
 void ReportJoints(const MotionDatabase& db, const SketchSignals& s, const MotionClip& sketch, const MotionClip& out,
                   bool textured, FillReport& report) {
+  report.joints.clear();
+  report.key_error_max_deg = 0.0;
   double sum = 0.0;
   long count = 0;
   for (int j = 0; j < db.num_joints(); ++j) {
@@ -229,16 +212,22 @@ void ReportJoints(const MotionDatabase& db, const SketchSignals& s, const Motion
   report.key_error_mean_deg = count ? sum / count : 0.0;
 }
 
-}  // namespace
-
 FillEngine::FillEngine(const MotionDatabase& db) : db_(db) {}
 FillEngine::~FillEngine() = default;
 
 Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions& options) {
+  return Fill(sketch, options, {});
+}
+
+Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions& options,
+                                    const std::vector<SketchPositionKey>& position_keys) {
   RETURN_IF_ERROR(options.Validate());
   if (sketch.num_frames < 1) return InvalidData("the sketch has no frames");
   if (std::abs(sketch.sample_rate_hz - db_.rate_hz()) > 1e-9 * db_.rate_hz())
     return InvalidArgument("the sketch must be resampled to the database rate first");
+  if (options.method == FillMethod::kPca) return FillPca(sketch, options);
+  if (options.method == FillMethod::kHybrid) return FillHybrid(sketch, options, position_keys);
+  if (!position_keys.empty()) return InvalidArgument("position keys need the hybrid method");
   FillResult result;
   FillReport& report = result.report;
   report.method = FillMethodName(options.method);
@@ -260,7 +249,7 @@ Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions&
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;
-  ASSIGN_OR_RETURN(result.clip, Compose(db_, s, out, sketch, textured));
+  ASSIGN_OR_RETURN(result.clip, ComposeFill(db_, s, out, sketch, textured));
   ReportJoints(db_, s, sketch, result.clip, textured, report);
   timer.Mark("compose");
   return result;

@@ -5,9 +5,12 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "processing/core/motion_clip.h"
+#include "processing/core/pca_model.h"
 #include "processing/database/motion_database.h"
+#include "processing/pca/pca_sketch.h"
 #include "processing/synthesis/fill_options.h"
 
 namespace mocapfill {
@@ -32,12 +35,31 @@ class FillEngine {
   // Fills every joint the sketch does not key. Keyed joints keep the sketch's rotations
   // (textured with the matched high bands when options.texture, keys re-pinned). Errors:
   // invalid options (kInvalidArgument); a sketch that does not fit the database skeleton,
-  // has no frames or no keyed joint (kInvalidData).
+  // has no frames or no keyed joint (kInvalidData); for `pca`/`hybrid` a model that does not
+  // fit the database skeleton or rate (kInvalidArgument), a failed key fit (kNumericalFailure).
   Result<FillResult> Fill(const MotionClip& sketch, const FillOptions& options);
+  // As above; `position_keys` (world positions of joints, metres) are fitted by the hybrid
+  // method's PCA stage (s_pos = options.pca.fit.fit.position_sigma_cm); other methods reject them.
+  Result<FillResult> Fill(const MotionClip& sketch, const FillOptions& options,
+                          const std::vector<SketchPositionKey>& position_keys);
+
+  // The PCA model of the `pca` and `hybrid` methods (not owned; must outlive the engine).
+  // Without one, the first such fill builds a model from the engine's database with
+  // options.pca.model (in memory only; its build time is reported as stage "pca_model") and
+  // keeps it for later fills: a leave-one-out fold's model sees only that fold's database.
+  void SetPcaModel(const PcaModel* model) { given_model_ = model; }
 
  private:
+  Result<const PcaModel*> Model(const FillOptions& options, FillReport& report);
+  Result<FillResult> FillPca(const MotionClip& sketch, const FillOptions& options);
+  Result<FillResult> FillHybrid(const MotionClip& sketch, const FillOptions& options,
+                                const std::vector<SketchPositionKey>& position_keys);
+
   const MotionDatabase& db_;
   std::unique_ptr<MatchingDatabase> cache_;
+  const PcaModel* given_model_ = nullptr;
+  std::unique_ptr<PcaModel> built_model_;
+  PcaModelOptions built_model_options_;
 };
 
 }  // namespace mocapfill

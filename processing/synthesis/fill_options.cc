@@ -37,6 +37,20 @@ Status FillOptions::Validate() const {
     return RangeError("root_feature_weight", root_feature_weight, "[0, 100]");
   if (db_phases < 0) return RangeError("db_phases", db_phases, "[0, inf)");
   if (threads < 0) return RangeError("threads", threads, "[0, inf)");
+  return pca.Validate().WithContext("pca");
+}
+
+Status PcaMethodOptions::Validate() const {
+  RETURN_IF_ERROR(model.Validate().WithContext("model"));
+  RETURN_IF_ERROR(closed_form.Validate().WithContext("closed_form"));
+  RETURN_IF_ERROR(fit.Validate().WithContext("fit"));
+  for (size_t i = 0; i < band_gains.size(); ++i)
+    if (!(band_gains[i] >= 0.0 && band_gains[i] <= 10.0))
+      return RangeError(("band_gains[" + std::to_string(i) + "]").c_str(), band_gains[i], "[0, 10]");
+  for (const ComponentDial& d : dials)
+    if (d.component < 0 || !std::isfinite(d.sigmas))
+      return InvalidArgument("dials: component " + std::to_string(d.component) + " = " + std::to_string(d.sigmas) +
+                             " is not a valid dial");
   return OkStatus();
 }
 
@@ -46,6 +60,8 @@ const char* FillMethodName(FillMethod method) {
     case FillMethod::kNearest: return "nn";
     case FillMethod::kFragment: return "fragment";
     case FillMethod::kHierarchical: return "hierarchical";
+    case FillMethod::kPca: return "pca";
+    case FillMethod::kHybrid: return "hybrid";
   }
   return "?";
 }
@@ -60,9 +76,11 @@ const char* JoinCriterionName(JoinCriterion join) {
 }
 
 Result<FillMethod> ParseFillMethod(std::string_view text) {
-  for (FillMethod m : {FillMethod::kMean, FillMethod::kNearest, FillMethod::kFragment, FillMethod::kHierarchical})
+  for (FillMethod m : {FillMethod::kMean, FillMethod::kNearest, FillMethod::kFragment, FillMethod::kHierarchical,
+                       FillMethod::kPca, FillMethod::kHybrid})
     if (text == FillMethodName(m)) return m;
-  return InvalidArgument("unknown method '" + std::string(text) + "' (expected hierarchical, fragment, nn or mean)");
+  return InvalidArgument("unknown method '" + std::string(text) +
+                         "' (expected hierarchical, fragment, nn, mean, pca or hybrid)");
 }
 
 Result<JoinCriterion> ParseJoinCriterion(std::string_view text) {

@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "processing/core/status.h"
+#include "processing/pca/pca_edit.h"
+#include "processing/pca/pca_model_builder.h"
+#include "processing/pca/pca_sketch.h"
 
 namespace mocapfill {
 
@@ -16,6 +19,40 @@ enum class FillMethod {
   kNearest,       // B3: per key frame the nearest database pose in the keyed channels
   kFragment,      // B5: fragment synthesis, all missing joints one target set (section 3)
   kHierarchical,  // B6: fragment synthesis outward from the keyed joints (section 4)
+  kPca,           // B4: closed-form regularised PCA fit per frame (5a.6)
+  kHybrid,        // B7: hierarchical fragments, Ceres PCA fit guided by them, texture, edits (section 7)
+};
+
+// What a keyed channel's low bands come from in the hybrid's texturing stage.
+enum class KeyedBase {
+  kFit,     // the PCA fit (keys within s_key, smooth in between by the prior)
+  kSketch,  // the sketch interpolated between its keys (as the hierarchical method)
+};
+
+// Options of the PCA-based methods (`pca`, `hybrid`; algorithms.md 5-7). Units in the names.
+struct PcaMethodOptions {
+  // Model built in memory from the fill database when the caller gives none (FillEngine::
+  // SetPcaModel): pose PCA, 95 % of the variance, at most 30 components (5b).
+  PcaModelOptions model;
+  ClosedFormOptions closed_form;  // `pca`: observation noise of keyed channels (1 deg)
+  // `hybrid` stage 2: the Ceres fit (subspace variant by default; fit.full_pose = true makes
+  // keyed joints hold exactly). The guide is the fragment result (s_guide = 10 deg).
+  // s_pos = 0.1 cm: against the guide and a small model, 0.25 cm left keyed feet 1.16 cm off
+  // (shipped sketch, default database, subspace); 0.1 cm gives 0.35 cm.
+  PcaSketchFitOptions fit = [] {
+    PcaSketchFitOptions o;
+    o.fit.position_sigma_cm = 0.1;
+    return o;
+  }();
+  // `hybrid` stage 3: texture bands of the fragment result added to every synthesised
+  // channel too (not only keyed ones), so the PCA prior does not smooth capture detail away.
+  bool texture_synthesized = true;
+  KeyedBase keyed_base = KeyedBase::kFit;
+  // `hybrid` stage 4 (optional edits, applied last; keys are not re-pinned after them):
+  std::vector<double> band_gains;    // Bruderlin-Williams gains, band 0 first; empty = none
+  std::vector<ComponentDial> dials;  // PCA component dials in standard deviations
+
+  Status Validate() const;
 };
 
 // How one candidate per fragment is chosen (thesis 4.6, algorithms.md 3a.4).
@@ -54,13 +91,14 @@ struct FillOptions {
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
+  PcaMethodOptions pca;  // `pca` and `hybrid` methods only
 
   // Fails with kInvalidArgument naming the field, its value and the allowed range.
   Status Validate() const;
 };
 
 // Names used on the command line and in reports: "mean", "nn", "fragment", "hierarchical";
-// "best-fragment", "cost-matrix", "best-animation"; "band", "lowpass".
+// "best-fragment", "cost-matrix", "best-animation"; "band", "lowpass"; "pca", "hybrid".
 const char* FillMethodName(FillMethod method);
 const char* JoinCriterionName(JoinCriterion join);
 Result<FillMethod> ParseFillMethod(std::string_view text);
@@ -107,6 +145,12 @@ struct FillReport {
   std::vector<FragmentSource> fragments;
   std::vector<StageTime> stages;
   std::vector<std::string> group_order;  // hierarchical: groups in synthesis order with drivers
+  // PCA methods: where the model came from ("given" or "built from the database"), its size,
+  // and (hybrid) the Ceres summary of the key fit.
+  std::string pca_model_source;
+  int pca_components = 0;
+  bool has_solver = false;
+  SolverReport solver;
 };
 
 }  // namespace mocapfill

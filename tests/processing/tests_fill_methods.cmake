@@ -2,3 +2,8 @@
 mocapfill_add_test(fill_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc
   LIBS mocapfill_evaluation mocapfill_synthesis mocapfill_formats)
+
+# PCA-based fill methods: `pca` (closed form) and `hybrid` (issue #5, part 2).
+mocapfill_add_test(hybrid_fill_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_fill_test.cc
+  LIBS mocapfill_evaluation mocapfill_synthesis mocapfill_pca mocapfill_formats)

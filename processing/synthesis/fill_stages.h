@@ -1,0 +1,55 @@
+// Pieces of the fill stage shared by the fragment methods (fill.cc) and the PCA-based methods
+// (hybrid_fill.cc): stage timing for reports, which joints a fill must leave alone, turning
+// signals back into a clip, and key residuals per joint. Internal to mocapfill_synthesis.
+#pragma once
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "processing/core/motion_clip.h"
+#include "processing/database/motion_database.h"
+#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/sketch_signals.h"
+
+namespace mocapfill {
+
+// Wall-clock time per named stage, appended to a report (repeated stages are summed).
+class StageTimer {
+ public:
+  explicit StageTimer(FillReport& report) : report_(report), start_(std::chrono::steady_clock::now()) {}
+  // Records the time since the previous mark under `stage`.
+  void Mark(const std::string& stage) {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    for (StageTime& t : report_.stages)
+      if (t.stage == stage) {
+        t.seconds += s;
+        return;
+      }
+    report_.stages.push_back({stage, s});
+  }
+
+ private:
+  FillReport& report_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// Per joint: 1 when the fill must not change it (keyed, or an ancestor of the motion root,
+// whose transform ComposeClip takes from the sketch).
+std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSignals& s);
+
+// Signals (frames x database channels) -> clip; fixed joints that were not textured keep the
+// sketch's exact rotations, the root its sketch trajectory when the sketch keys it. Every
+// frame of the result is keyed.
+Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
+                               const MotionClip& sketch, bool textured);
+
+// Fills report.joints and the key errors (output vs sketch at its rotation keys, degrees).
+void ReportJoints(const MotionDatabase& db, const SketchSignals& s, const MotionClip& sketch, const MotionClip& out,
+                  bool textured, FillReport& report);
+
+}  // namespace mocapfill
