@@ -1,11 +1,16 @@
 #include "converter/database_arg.h"
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "converter/console.h"
 #include "formats/file_io.h"
 #include "formats/mfdb/mfdb_file.h"
 #include "formats/mfdb/motion_folder.h"
+
+#ifndef MOCAPFILL_SOURCE_DEFAULT_DB
+#define MOCAPFILL_SOURCE_DEFAULT_DB ""
+#endif
 
 namespace mocapfill::cli {
 
@@ -69,9 +74,31 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
 
 bool IsDatabaseFile(const std::string& path) { return LowerExtension(path) == ".mfdb" || LooksLikeMfdb(path); }
 
+std::string DefaultDatabaseDir() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed = exe.parent_path().parent_path() / "share" / "mocapfill" / "default_db";
+    if (fs::is_directory(installed, ec)) return installed.string();
+  }
+  const fs::path source(MOCAPFILL_SOURCE_DEFAULT_DB);
+  if (!source.empty() && fs::is_directory(source, ec)) return source.string();
+  return "";
+}
+
+Result<MotionDatabase> LoadDatabase(const std::vector<std::string>& paths, const DatabaseBuildFlags& flags) {
+  if (paths.empty()) {
+    const std::string dir = DefaultDatabaseDir();
+    if (dir.empty()) return IoError("the default database is not installed; give --db FILE|FOLDER");
+    return BuildDatabaseFromPaths({dir}, flags);
+  }
+  if (paths.size() == 1 && IsDatabaseFile(paths[0])) return ReadMfdb(paths[0]);
+  return BuildDatabaseFromPaths(paths, flags);
+}
+
 Result<MotionDatabase> LoadDatabaseArg(const std::string& path, const DatabaseBuildFlags& flags) {
-  if (IsDatabaseFile(path)) return ReadMfdb(path);
-  return BuildDatabaseFromPaths({path}, flags);
+  return LoadDatabase({path}, flags);
 }
 
 }  // namespace mocapfill::cli

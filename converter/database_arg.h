@@ -1,6 +1,7 @@
-// The --db argument shared by every verb that uses a motion database: either a built .mfdb
-// file (read and verified) or motion files/folders, imported in parallel and built in memory
-// on the fly (nothing is written that the user did not ask for).
+// Loading a motion database, shared by every verb that uses one and by the pipeline's
+// database node: a built .mfdb file (read and verified), motion files/folders imported in
+// parallel and built in memory on the fly (nothing is written that the user did not ask
+// for), or the embedded default database.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -36,7 +37,15 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
 // True when `path` names an .mfdb file (by extension or by its magic bytes).
 bool IsDatabaseFile(const std::string& path);
 
-// A --db value: an .mfdb file is read; a folder or motion file is built in memory.
+// The default database folder: <exe>/../share/mocapfill/default_db when installed, else the
+// source tree's fixtures/default_db compiled in. Empty when neither exists.
+std::string DefaultDatabaseDir();
+
+// The one database loader. `paths` empty = the default database; a single .mfdb file is read
+// as is; motion files and folders are imported and built with `flags`. Errors name the path.
+Result<MotionDatabase> LoadDatabase(const std::vector<std::string>& paths, const DatabaseBuildFlags& flags = {});
+
+// A --db value: LoadDatabase({path}, flags).
 Result<MotionDatabase> LoadDatabaseArg(const std::string& path, const DatabaseBuildFlags& flags = {});
 
 }  // namespace mocapfill::cli

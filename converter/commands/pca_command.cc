@@ -10,7 +10,7 @@
 
 #include "converter/commands.h"
 #include "converter/console.h"
-#include "converter/default_database.h"
+#include "converter/database_arg.h"
 #include "converter/exit_codes.h"
 #include "converter/import_flags.h"
 #include "formats/file_io.h"
