@@ -18,5 +18,6 @@ void AddAnalyzeCommand(CLI::App& app, CommandAction& action);
 void AddFillCommand(CLI::App& app, CommandAction& action);
 void AddEvalCommand(CLI::App& app, CommandAction& action);
 void AddPcaCommand(CLI::App& app, CommandAction& action);
+void AddRunCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace mocapfill::cli

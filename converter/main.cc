@@ -28,6 +28,7 @@ constexpr Verb kVerbs[] = {
     {"db", mocapfill::cli::AddDbCommand},           {"filter", mocapfill::cli::AddFilterCommand},
     {"analyze", mocapfill::cli::AddAnalyzeCommand}, {"fill", mocapfill::cli::AddFillCommand},
     {"eval", mocapfill::cli::AddEvalCommand},       {"pca", mocapfill::cli::AddPcaCommand},
+    {"run", mocapfill::cli::AddRunCommand},
 };
 
 // The verb the command line names: its first argument that is not one of the top-level

@@ -1,0 +1,32 @@
+// What `mocapfill run` does around the graph core: checks that outputs never overwrite
+// inputs, describes the plan (--dry-run) and the node types (--list-nodes), and writes the
+// per-node timing report (--report run.json).
+#pragma once
+
+#include <string>
+
+#include "converter/exit_codes.h"
+#include "converter/pipeline/pipeline_file.h"
+#include "processing/graph/graph.h"
+
+namespace mocapfill::cli {
+
+// Before anything runs: an export path naming an input file (kIoError: exit 4), or two
+// exports writing the same file (kInvalidArgument), names the nodes.
+Status CheckOutputPaths(const graph::Graph& graph);
+
+// The validated plan, one node per line in run order with its inputs and every option
+// (defaults included), for --dry-run.
+std::string DescribePlan(const PipelineFile& file, const graph::Graph& graph);
+
+// Every node type: ports and options with types, defaults, units and ranges (--list-nodes;
+// the README and docs/pipeline.md tables follow it).
+std::string DescribeNodeTypes(const graph::NodeRegistry& registry);
+
+// {"pipeline", "ok", "error", "total_seconds", "nodes": [{"id", "type", "seconds", "warnings"}]}.
+std::string RunReportJson(const PipelineFile& file, const graph::GraphRun& run);
+
+// Where a node's failure belongs: sources read input, sinks write output.
+Stage StageOf(graph::NodeRole role);
+
+}  // namespace mocapfill::cli
