@@ -1,6 +1,7 @@
 #include "converter/fill_flags.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace mocapfill::cli {
 
@@ -53,11 +54,78 @@ void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
       ->capture_default_str();
 }
 
+void AddPcaMethodFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
+  PcaMethodOptions& pca = options.pca;
+  command.add_option("--pca-fit", text.pca_fit,
+                     "Hybrid: PCA fit variant, subspace (keys within --key-deg, then re-pinned) or full-pose (keys exact)")
+      ->check(CLI::IsMember({"subspace", "full-pose"}))
+      ->capture_default_str();
+  command.add_option("--guide-deg", pca.fit.fit.guide_sigma_deg,
+                     "Hybrid: tolerance of the guide towards the fragment result (degrees)")
+      ->check(CLI::Range(0.01, 1000.0))
+      ->capture_default_str();
+  command.add_option("--key-deg", pca.fit.fit.key_sigma_deg, "Hybrid: tolerance of rotation keys in the fit (degrees)")
+      ->check(CLI::Range(0.001, 100.0))
+      ->capture_default_str();
+  command.add_option("--variance", pca.model.basis.variance_kept,
+                     "PCA model built from the database: share of the variance kept")
+      ->check(CLI::Range(0.01, 1.0))
+      ->capture_default_str();
+  command.add_option("--max-components", pca.model.basis.max_components,
+                     "PCA model built from the database: at most this many components")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command.add_option("--keyed-base", text.keyed_base,
+                     "Hybrid: keyed joints' low bands from the PCA fit or the sketch (fit or sketch)")
+      ->check(CLI::IsMember({"fit", "sketch"}))
+      ->capture_default_str();
+  command.add_option("--texture-synth", text.texture_synthesized,
+                     "Hybrid: add the fragments' high bands to synthesised joints too (on or off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  command.add_option("--gains", pca.band_gains,
+                     "Hybrid edit: band gains after the fill, L0 (highest) first, comma-separated")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 10.0));
+  command.add_option("--dial", text.dials,
+                     "Hybrid edit: move PCA component <k> (1-based) by <s> standard deviations, e.g. --dial 1=+1.5")
+      ->delimiter(',');
+}
+
+namespace {
+
+// "3=-1.5": 1-based component, change in standard deviations.
+Result<std::vector<ComponentDial>> ParseDials(const std::vector<std::string>& texts) {
+  std::vector<ComponentDial> dials;
+  for (const std::string& text : texts) {
+    const size_t eq = text.find('=');
+    ComponentDial dial;
+    size_t used_index = 0, used_value = 0;
+    const Status bad = InvalidArgument("--dial '" + text + "': expected <component>=<sigmas>, e.g. 1=+2.0");
+    try {
+      if (eq == std::string::npos) return bad;
+      dial.component = std::stoi(text.substr(0, eq), &used_index) - 1;
+      dial.sigmas = std::stod(text.substr(eq + 1), &used_value);
+    } catch (const std::exception&) {
+      return bad;
+    }
+    if (used_index != eq || used_value != text.size() - eq - 1 || dial.component < 0) return bad;
+    dials.push_back(dial);
+  }
+  return dials;
+}
+
+}  // namespace
+
 Status ApplyFillFlagText(const FillFlagText& text, FillOptions& options) {
   ASSIGN_OR_RETURN(options.join, ParseJoinCriterion(text.join));
   options.texture = text.texture == "on";
   options.match_signal = text.match == "band" ? MatchSignal::kBand : MatchSignal::kLowPass;
   options.blend = std::min(options.blend, options.candidates);  // a smaller K caps the blend
+  options.pca.fit.full_pose = text.pca_fit == "full-pose";
+  options.pca.keyed_base = text.keyed_base == "sketch" ? KeyedBase::kSketch : KeyedBase::kFit;
+  options.pca.texture_synthesized = text.texture_synthesized == "on";
+  ASSIGN_OR_RETURN(options.pca.dials, ParseDials(text.dials));
   return OkStatus();
 }
 

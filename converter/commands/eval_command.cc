@@ -199,7 +199,8 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--every", args->every, "Key spacing of the sketches, frames")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  command->add_option("--methods", args->methods, "Methods to score: mean, nn, fragment, hierarchical")
+  command->add_option("--methods", args->methods, "Methods to score: mean, nn, fragment, hierarchical, pca, hybrid "
+                                                  "(PCA models are built from each fold's database only)")
       ->capture_default_str();
   command->add_option("--folds", args->folds, "Only these folds (comma-separated label values)");
   command->add_option("--contents", args->contents, "Only test clips with these contents (comma-separated)");
@@ -207,10 +208,13 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--save-sketches", args->save_sketches,
                       "Only write the selected clips' sketches (.sketch.glb, and .sketch.bvh at the key rate) to DIR");
   AddFillFlags(*command, args->fill, args->text);
+  AddPcaMethodFlags(*command, args->fill, args->text);
   command->footer(
       "Example:\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
-      "      --methods mean,nn,fragment,hierarchical --json > eval.json");
+      "      --methods mean,nn,fragment,hierarchical --json > eval.json\n"
+      "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
+      "      --methods hierarchical,pca,hybrid --contents walk,run");
   command->callback([args, &action] { action = [args] { return RunEval(*args); }; });
 }
 

@@ -14,6 +14,7 @@
 #include "converter/import_flags.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
+#include "formats/pca/pca_file.h"
 #include "processing/motion/resample.h"
 #include "processing/synthesis/fill.h"
 #include "processing/synthesis/skeleton_map.h"
@@ -23,7 +24,7 @@ namespace mocapfill::cli {
 namespace {
 
 struct FillArgs {
-  std::string input, output, report, map, method = "hierarchical", synthesize, keep;
+  std::string input, output, report, map, method = "hierarchical", synthesize, keep, pca;
   std::vector<std::string> db;
   ImportOptions import;
   FillOptions fill;
@@ -98,6 +99,16 @@ nlohmann::ordered_json ReportJson(const FillReport& r, const std::string& db_nam
                          {"blended", f.blended}});
   out["fragments"] = fragments;
   out["group_order"] = r.group_order;
+  if (!r.pca_model_source.empty())
+    out["pca_model"] = {{"source", r.pca_model_source}, {"components", r.pca_components}};
+  if (r.has_solver) {
+    const SolverReport& s = r.solver;
+    out["pca_solver"] = {{"termination", s.termination_type}, {"converged", s.converged},
+                         {"iterations", s.iterations},        {"initial_cost", s.initial_cost},
+                         {"final_cost", s.final_cost},        {"linear_solver", s.linear_solver},
+                         {"parameters", s.num_parameters},    {"residuals", s.num_residuals},
+                         {"solve_seconds", s.solve_time_s},   {"message", s.message}};
+  }
   nlohmann::ordered_json stages = nlohmann::ordered_json::object();
   stages["load_database"] = load_s;
   for (const StageTime& s : r.stages) stages[s.stage] = s.seconds;
@@ -117,6 +128,11 @@ void PrintSummary(const FillReport& r) {
   std::fprintf(stderr, "  time:");
   for (const StageTime& s : r.stages) std::fprintf(stderr, " %s %.1f ms", s.stage.c_str(), 1000.0 * s.seconds);
   std::fprintf(stderr, "\n");
+  if (!r.pca_model_source.empty())
+    std::fprintf(stderr, "  pca model: %s, %d components\n", r.pca_model_source.c_str(), r.pca_components);
+  if (r.has_solver)
+    std::fprintf(stderr, "  pca fit: %s after %d iterations, cost %.4g -> %.4g\n", r.solver.termination_type.c_str(),
+                 r.solver.iterations, r.solver.initial_cost, r.solver.final_cost);
 }
 
 Result<Scene> LoadSketch(const FillArgs& args) {
@@ -163,7 +179,13 @@ int RunFill(FillArgs& args) {
   resample.rate_hz = db->rate_hz();
   Result<MotionClip> sketch = ResampleClip(scene->clips[0], resample);
   if (!sketch.ok()) return Fail(sketch.status().WithContext(args.input), Stage::kInput);
+  Result<PcaModel> model = PcaModel{};
+  if (!args.pca.empty()) {
+    model = ReadPcaModel(args.pca);
+    if (!model.ok()) return Fail(model.status(), Stage::kInput);
+  }
   FillEngine engine(*db);
+  if (!args.pca.empty()) engine.SetPcaModel(&*model);
   Result<FillResult> filled = engine.Fill(ToDatabaseClip(*mapping, db->skeleton(), *sketch), args.fill);
   if (!filled.ok()) return Fail(filled.status().WithContext(args.input), Stage::kProcessing);
   Scene out = std::move(*scene);
@@ -188,20 +210,26 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
       ->required();
   command->add_option("-o,--output", args->output, "Output file (.glb .gltf .bvh)")->required();
   command->add_option("--db", args->db, "Database: an .mfdb file or motion files/folders (default: embedded)");
-  command->add_option("--method", args->method, "hierarchical, fragment, nn or mean")
-      ->check(CLI::IsMember({"hierarchical", "fragment", "nn", "mean"}))
+  command->add_option("--method", args->method, "hierarchical, fragment, nn, mean, pca or hybrid")
+      ->check(CLI::IsMember({"hierarchical", "fragment", "nn", "mean", "pca", "hybrid"}))
       ->capture_default_str();
+  command->add_option("--pca", args->pca,
+                      "PCA model (.pca, `mocapfill pca build`) for --method pca|hybrid; default: built in memory "
+                      "from the database (time reported as stage pca_model)");
   command->add_option("--report", args->report, "Write a JSON report (joints, fragment sources, seams, key errors, times)");
   command->add_option("--map", args->map, "JSON object renaming sketch joints to database joints");
   command->add_option("--synthesize", args->synthesize, "Joints to synthesise even if keyed (comma-separated)");
   command->add_option("--keep", args->keep, "Only these joints are keyed; every other joint is synthesised");
   AddFillFlags(*command, args->fill, args->text);
+  AddPcaMethodFlags(*command, args->fill, args->text);
   AddImportFlags(*command, args->import);
   command->footer(
       "Examples:\n"
       "  mocapfill fill sketch.glb -o enriched.glb --report fill.json\n"
       "  mocapfill fill baked.bvh -o out.glb --keep Hips,UpperLeg_L,LowerLeg_L,Foot_L,UpperLeg_R,LowerLeg_R,Foot_R\n"
-      "  mocapfill fill sketch.glb -o out.glb --db ../shared/data/bandai-namco-1/data --method fragment");
+      "  mocapfill fill sketch.glb -o out.glb --db ../shared/data/bandai-namco-1/data --method fragment\n"
+      "  mocapfill fill sketch.glb -o out.glb --method hybrid --pca walk.pca --report fill.json\n"
+      "  mocapfill fill sketch.glb -o out.glb --method hybrid --pca-fit full-pose --dial 1=+1.5");
   command->callback([args, &action] { action = [args] { return RunFill(*args); }; });
 }
 
