@@ -26,10 +26,11 @@ function(mocapfill_link_solver_deps_statically target)
   if(NOT TARGET Ceres::ceres OR MOCAPFILL_SANITIZE)
     return()
   endif()
-  # Link order: users before what they use. metis ships no archive; it is a small C library
-  # and stays shared. (The shared glog needs libunwind, the archive does not: libunwind must
-  # stay out, or it would take over C++ exception unwinding from libgcc, at two
-  # sigprocmask calls per frame.)
+  # Link order: users before what they use. metis and libunwind ship no usable archive
+  # (none, or one built without -fPIC); both are small C libraries and stay shared. glog's
+  # stack traces need libunwind, but libunwind also exports the _Unwind_* functions C++
+  # exceptions go through, at two sigprocmask calls per frame (480 for --version): libgcc's
+  # unwinder is linked in first, so the executable defines those itself.
   set(names glog gflags spqr cholmod amd camd ccolamd colamd suitesparseconfig cxsparse
             lapack blas f77blas atlas gfortran quadmath gomp)
   set(archives)
@@ -42,11 +43,13 @@ function(mocapfill_link_solver_deps_statically target)
     list(APPEND archives "${archive}")
   endforeach()
   find_library(_metis NAMES metis libmetis.so.5 PATHS /usr/lib/x86_64-linux-gnu NO_CACHE)
-  if(NOT _metis)
-    message(STATUS "mocapfill: metis not found; ${target} links Ceres's dependencies shared")
+  find_library(_unwind NAMES unwind libunwind.so.8 PATHS /usr/lib/x86_64-linux-gnu NO_CACHE)
+  mocapfill_archive_of(_gcc_eh gcc_eh)
+  if(NOT _metis OR NOT _unwind OR NOT _gcc_eh)
+    message(STATUS "mocapfill: metis, libunwind or libgcc_eh not found; ${target} links Ceres's dependencies shared")
     return()
   endif()
-  list(APPEND archives "${_metis}" Threads::Threads m)
+  list(APPEND archives "${_metis}" "${_gcc_eh}" "${_unwind}" Threads::Threads m)
 
   # Ceres::ceres's dependencies become conditional on the consuming target's property.
   get_target_property(deps Ceres::ceres INTERFACE_LINK_LIBRARIES)
