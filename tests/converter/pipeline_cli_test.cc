@@ -172,6 +172,15 @@ TEST(PipelineExamples, PcaFitGuidedByFragmentsAndTextured) {
   EXPECT_GT(MeanAngleDeg(loose.clips[0], out.clips[0]), 0.1);
 }
 
+TEST(PipelineExamples, HybridFillTakesTheModelPort) {
+  const Scene hybrid = RunExample("fill_hybrid.json", "fill_hybrid.glb");
+  const Scene hierarchical = RunExample("fill_default.json", "fill_default_for_hybrid.glb");
+  ASSERT_EQ(hybrid.clips.size(), 1u);
+  ASSERT_EQ(hierarchical.clips.size(), 1u);
+  EXPECT_LT(KeyErrorDeg(Sketch(), hybrid.clips[0]), kKeyToleranceDeg);  // keys re-pinned
+  EXPECT_GT(MeanAngleDeg(hybrid.clips[0], hierarchical.clips[0]), 0.1);  // the PCA stage did act
+}
+
 TEST(PipelineRun, DryRunPrintsThePlanAndWritesNothing) {
   const std::string out = testing::ScratchDir("pipeline_dry") + "/never.glb";
   const RunResult run = RunCli("run " + Example("fill_pca_fit_texture.json") + " --dry-run --set out.path=" + out);

@@ -31,6 +31,8 @@ class FillNode : public Node {
     for (const std::string& w : mapping.warnings) context.warnings.push_back("sketch: " + w);
     ASSIGN_OR_RETURN(const MotionClip sketch, AtRate(clip, db.rate_hz()));
     FillEngine engine(db);
+    // The pca and hybrid methods use a given model, else build one from the database.
+    if (inputs.Has("model")) engine.SetPcaModel(&inputs.Model("model"));
     ASSIGN_OR_RETURN(FillResult filled, engine.Fill(ToDatabaseClip(mapping, db.skeleton(), sketch), options_));
     return WithClip(scene, ToSketchClip(mapping, filled.clip, sketch, db.root_joint()));
   }
@@ -91,7 +93,9 @@ NodeTypeSpec FillNodeSpec() {
   spec.type = "fill";
   spec.summary = "Fill the sketch's unkeyed joints from a motion database (as `mocapfill fill`)";
   spec.inputs = {{"sketch", PortType::kMotion, false, "keyframed sketch; joints with keys are kept"},
-                 {"database", PortType::kDatabase, false, "motion database the missing joints come from"}};
+                 {"database", PortType::kDatabase, false, "motion database the missing joints come from"},
+                 {"model", PortType::kPcaModel, true,
+                  "PCA model of the pca and hybrid methods (default: built from the database)"}};
   spec.output = PortSpec{"motion", PortType::kMotion, false, "the sketch's asset with a complete animation at the database rate"};
   spec.options = {
       MethodOption(),
