@@ -1,12 +1,14 @@
 #include "formats/file_io.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 
@@ -79,6 +81,8 @@ Result<std::string> ReadFileBytes(const std::string& path) {
   size_t filled = 0;
   size_t chunk = S_ISREG(info.st_mode) && info.st_size > 0 ? static_cast<size_t>(info.st_size) + 1 : 65536;
   while (true) {
+    bytes.reserve(filled + chunk);
+    PrefaultForWrite(bytes.data() + filled, chunk);
     bytes.resize(filled + chunk);
     const ssize_t held = ReadInto(fd.get(), bytes, filled);
     if (held < 0) return IoError(path + ": read failed");
@@ -89,6 +93,20 @@ Result<std::string> ReadFileBytes(const std::string& path) {
     filled = static_cast<size_t>(held);
     chunk = std::max<size_t>(65536, filled);
   }
+}
+
+void PrefaultForWrite(void* data, size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  static const size_t kPage = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
+  // Below a few pages the call costs more than the faults it saves.
+  if (bytes < 16 * kPage) return;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kPage - 1) / kPage * kPage;
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) / kPage * kPage;
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
 }
 
 Status WriteFileAtomic(const std::string& path, const std::string& bytes) {

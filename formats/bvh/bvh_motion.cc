@@ -11,6 +11,7 @@
 #include "formats/bvh/bvh_motion_parallel.h"
 #include "formats/bvh/bvh_motion_rows.h"
 #include "formats/bvh/bvh_number.h"
+#include "formats/file_io.h"
 #include "processing/core/rotation.h"
 
 namespace mocapfill::bvh {
@@ -137,6 +138,8 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   const size_t reserve_rows = std::min({static_cast<size_t>(header.declared_frames), max_rows, kMaxJointFrames / joints});
   clip.rotations.reserve(reserve_rows * joints);
   clip.translations.reserve(reserve_rows * joints);
+  PrefaultForWrite(clip.rotations.data(), clip.rotations.capacity() * sizeof(Eigen::Quaterniond));
+  PrefaultForWrite(clip.translations.data(), clip.translations.capacity() * sizeof(Eigen::Vector3d));
 
   std::vector<double> row(channels);
   int64_t frame = 0;

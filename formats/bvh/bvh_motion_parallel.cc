@@ -1,5 +1,7 @@
 #include "formats/bvh/bvh_motion_parallel.h"
 
+#include "formats/file_io.h"
+
 #include <cstring>
 #include <system_error>
 #include <thread>
@@ -35,6 +37,10 @@ struct Chunk {
 Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>& samplers, int channels,
                  int64_t first_frame, int64_t frame_limit, MotionClip& clip) {
   const size_t joints = samplers.size();
+  // Each thread maps the pages it is about to fill, so the two share that work too.
+  const size_t first = static_cast<size_t>(first_frame) * joints, count = static_cast<size_t>(frame_limit - first_frame) * joints;
+  PrefaultForWrite(clip.rotations.data() + first, count * sizeof(Eigen::Quaterniond));
+  PrefaultForWrite(clip.translations.data() + first, count * sizeof(Eigen::Vector3d));
   std::vector<double> row(channels);
   Chunk chunk;
   for (int64_t frame = first_frame;; ++frame) {

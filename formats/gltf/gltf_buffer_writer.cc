@@ -1,5 +1,6 @@
 #include "formats/gltf/tinygltf_private.h"
 
+#include "formats/file_io.h"
 #include "formats/gltf/gltf_export_internal.h"
 
 namespace mocapfill::gltf_internal {
@@ -17,7 +18,10 @@ int BufferWriter::AddView(const void* data, size_t size, int target) {
   return static_cast<int>(model_.bufferViews.size()) - 1;
 }
 
-void BufferWriter::Reserve(size_t bytes) { bytes_.reserve(bytes_.size() + bytes + 3); }
+void BufferWriter::Reserve(size_t bytes) {
+  bytes_.reserve(bytes_.size() + bytes + 3);
+  PrefaultForWrite(bytes_.data() + bytes_.size(), bytes_.capacity() - bytes_.size());
+}
 
 float* BufferWriter::AddFloatView(size_t count, int& view) {
   bytes_.resize((bytes_.size() + 3) / 4 * 4, 0);
