@@ -1,8 +1,11 @@
 // Whole-file reads and atomic writes. Formats never write to a path directly.
 #pragma once
 
+#include <compare>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -29,6 +32,15 @@ void PrefaultForWrite(void* data, size_t bytes);
 
 // True when both paths name the same existing file (same device and inode).
 bool IsSameFile(const std::string& a, const std::string& b);
+
+// Device and inode of an existing file: many paths checked against many others (a batch
+// conversion's outputs against its inputs) stat each path once instead of per pair.
+struct FileId {
+  uint64_t device = 0;
+  uint64_t inode = 0;
+  friend auto operator<=>(const FileId&, const FileId&) = default;
+};
+std::optional<FileId> IdentifyFile(const std::string& path);
 
 // Lower-case extension including the dot (".glb"), or "" when there is none.
 std::string LowerExtension(const std::string& path);
