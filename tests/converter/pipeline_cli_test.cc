@@ -192,6 +192,15 @@ TEST(PipelineRun, DryRunPrintsThePlanAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(PipelineRun, HelpCarriesExamplesAndNoPipelineIsAUsageError) {
+  const RunResult help = RunCli("run --help");
+  ASSERT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_NE(help.output.find("Examples:"), std::string::npos) << help.output;
+  const RunResult none = RunCli("run");
+  EXPECT_EQ(none.exit_code, 1) << none.output;
+  EXPECT_NE(none.output.find("error: give a pipeline file (or --list-nodes)"), std::string::npos) << none.output;
+}
+
 TEST(PipelineRun, ListNodesDocumentsEveryType) {
   const RunResult run = RunCli("run --list-nodes");
   ASSERT_EQ(run.exit_code, 0) << run.output;
