@@ -176,6 +176,22 @@ std::vector<size_t> TopologicalOrder(const GraphConfig& config, const std::vecto
   return order;
 }
 
+// True when node `start` feeds itself through its inputs' producers.
+bool OnCycle(const std::vector<Checked>& checked, size_t start) {
+  std::vector<bool> seen(checked.size(), false);
+  std::vector<size_t> stack;
+  for (const auto& [port, producer] : checked[start].inputs) stack.push_back(static_cast<size_t>(producer));
+  while (!stack.empty()) {
+    const size_t node = stack.back();
+    stack.pop_back();
+    if (node == start) return true;
+    if (seen[node]) continue;
+    seen[node] = true;
+    for (const auto& [port, producer] : checked[node].inputs) stack.push_back(static_cast<size_t>(producer));
+  }
+  return false;
+}
+
 }  // namespace
 
 Result<Graph> Graph::Build(const GraphConfig& config, const NodeRegistry& registry) {
@@ -200,7 +216,9 @@ Result<Graph> Graph::Build(const GraphConfig& config, const NodeRegistry& regist
     if (checked[i].spec) CheckInputs(config, i, by_id, checked, problems, checked[i]);
   std::vector<size_t> in_cycle;
   const std::vector<size_t> order = TopologicalOrder(config, checked, in_cycle);
-  for (size_t i : in_cycle) problems.Add(config.nodes[i], "is part of a cycle (its inputs depend on its own output)");
+  for (size_t i : in_cycle)
+    problems.Add(config.nodes[i], OnCycle(checked, i) ? "is part of a cycle (its inputs depend on its own output)"
+                                                      : "depends on a cycle (one of its inputs is fed by one)");
 
   Graph graph;
   std::vector<int> position(config.nodes.size(), -1);

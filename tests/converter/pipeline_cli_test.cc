@@ -309,6 +309,12 @@ TEST(PipelineRun, RejectsCycles) {
                          j["nodes"].push_back({{"id", "eq2"}, {"type", "filter"}, {"inputs", {{"motion", "eq"}}}});
                        }),
                  1, "node \"eq\" (filter): is part of a cycle");
+  ExpectRejected(Write("cycle_downstream",
+                       [](nlohmann::json& j) {
+                         j["nodes"][1]["inputs"]["motion"] = "eq2";
+                         j["nodes"].push_back({{"id", "eq2"}, {"type", "filter"}, {"inputs", {{"motion", "eq"}}}});
+                       }),
+                 1, "node \"out\" (export): depends on a cycle");
 }
 
 TEST(PipelineRun, RejectsInvalidJsonAndBadOverrides) {

@@ -225,6 +225,11 @@ TEST(GraphBuild, RejectsCycles) {
   EXPECT_NE(m.find("node \"a\" (filter): is part of a cycle"), std::string::npos) << m;
   EXPECT_NE(m.find("node \"b\" (filter): is part of a cycle"), std::string::npos) << m;
   EXPECT_EQ(m.find("node \"eq\""), std::string::npos) << m;  // the valid part is not blamed
+  // A node fed by the cycle is not on it, and is told so.
+  config.nodes.push_back(Make("after", "sink", {{"motion", "b"}}));
+  const std::string m2 = BuildError(config);
+  EXPECT_NE(m2.find("node \"after\" (sink): depends on a cycle"), std::string::npos) << m2;
+  EXPECT_EQ(m2.find("node \"after\" (sink): is part of a cycle"), std::string::npos) << m2;
 }
 
 TEST(GraphBuild, RejectsOtherVersionsAndEmptyGraphs) {
