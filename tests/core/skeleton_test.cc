@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "processing/core/kinematics.h"
 #include "processing/core/motion_clip.h"
 #include "processing/core/rotation.h"
@@ -55,6 +57,27 @@ TEST(Kinematics, RotatingTheRootSwingsTheChain) {
   EXPECT_LT((positions[2] - Eigen::Vector3d(-2, 0, 0)).norm(), 1e-12);
   EXPECT_TRUE(clip.Validate(s).ok());
   EXPECT_NEAR(RestPoseExtent(s, 1), 2.0, 1e-12);
+}
+
+// Validate's fast acceptance (squared norms, x - x for finiteness) must reject exactly what
+// the per-value checks reject, with the same messages.
+TEST(MotionClip, ValidateRejectsNonFiniteAndNonUnitValuesByName) {
+  const Skeleton s = *Skeleton::Build(Chain());
+  MotionClip clip = MotionClip::RestPose(s, 4, 30.0);
+  clip.translation(2, 1).y() = std::numeric_limits<double>::quiet_NaN();
+  Status status = clip.Validate(s);
+  EXPECT_NE(status.message().find("non-finite value at frame 2, joint 'mid'"), std::string::npos) << status.message();
+  clip.translation(2, 1).y() = 1.0;
+  clip.rotation(3, 2).coeffs().x() = std::numeric_limits<double>::infinity();
+  status = clip.Validate(s);
+  EXPECT_NE(status.message().find("non-finite value at frame 3, joint 'tip'"), std::string::npos) << status.message();
+  clip.rotation(3, 2) = Eigen::Quaterniond(1.0 + 1.2e-6, 0.0, 0.0, 0.0);  // 1.2e-6 off unit: rejected
+  status = clip.Validate(s);
+  EXPECT_NE(status.message().find("non-unit rotation"), std::string::npos) << status.message();
+  clip.rotation(3, 2) = Eigen::Quaterniond(1.0 - 0.99e-6, 0.0, 0.0, 0.0);  // within 1e-6: accepted
+  EXPECT_TRUE(clip.Validate(s).ok());
+  clip.translation(0, 0).x() = 1e308;  // huge but finite (x - x stays 0)
+  EXPECT_TRUE(clip.Validate(s).ok());
 }
 
 }  // namespace
