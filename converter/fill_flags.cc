@@ -57,7 +57,7 @@ void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
 void AddPcaMethodFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
   PcaMethodOptions& pca = options.pca;
   command.add_option("--pca-fit", text.pca_fit,
-                     "Hybrid: PCA fit variant, subspace (keys within --key-deg, then re-pinned) or full-pose (keys exact)")
+                     "Hybrid: PCA fit variant, subspace (keys within --key-deg, then re-pinned) or full-pose (keys exact; slower)")
       ->check(CLI::IsMember({"subspace", "full-pose"}))
       ->capture_default_str();
   command.add_option("--guide-deg", pca.fit.fit.guide_sigma_deg,

@@ -7,3 +7,9 @@ mocapfill_add_test(fill_tests
 mocapfill_add_test(hybrid_fill_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_fill_test.cc
   LIBS mocapfill_evaluation mocapfill_synthesis mocapfill_pca mocapfill_formats)
+
+# Leave-one-style-out over the shared corpus's walks: hybrid against hierarchical (skips visibly
+# without ../shared/data).
+mocapfill_add_test(hybrid_loso_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_loso_test.cc
+  LIBS mocapfill_evaluation mocapfill_mfdb mocapfill_formats)
