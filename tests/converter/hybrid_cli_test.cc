@@ -10,34 +10,17 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
 namespace {
 
+using testing::ReadAll;
+using testing::RunCli;
+using testing::RunResult;
+
 constexpr double kKeyToleranceDeg = 0.5;  // subspace target (algorithms.md 9.5)
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-RunResult RunCli(const std::string& args) {
-  RunResult result;
-  FILE* pipe = popen((testing::MocapfillExe() + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 std::string GlbSketch() { return testing::FixturePath("sketches/walk_proud_002_legs8.glb"); }
 

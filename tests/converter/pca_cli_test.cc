@@ -11,29 +11,17 @@
 #include "formats/motion_io.h"
 #include "processing/core/rotation.h"
 #include "tests/processing/pca_test_data.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
 namespace {
 
+using testing::ReadAll;
+using testing::RunCli;
+using testing::RunResult;
+
 namespace fs = std::filesystem;
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-RunResult RunCli(const std::string& args) {
-  RunResult result;
-  FILE* pipe = popen((testing::MocapfillExe() + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
 

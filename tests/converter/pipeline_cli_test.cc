@@ -13,32 +13,20 @@
 
 #include "formats/motion_io.h"
 #include "processing/core/rotation.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
 namespace {
 
+using testing::ReadAll;
+using testing::RunCli;
+using testing::RunResult;
+
 namespace fs = std::filesystem;
 
 constexpr double kKeyToleranceDeg = 0.5;  // issue #4: keyed joints hold their keys
 constexpr double kConvertToleranceRad = 1e-5;  // glTF stores float rotations
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-RunResult RunCli(const std::string& args) {
-  RunResult result;
-  FILE* pipe = popen((testing::MocapfillExe() + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
 
 std::string Example(const std::string& name) { return testing::FixturePath("pipelines/" + name); }
 
