@@ -79,8 +79,12 @@ std::string DefaultDatabaseDir() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    const fs::path installed = exe.parent_path().parent_path() / "share" / "mocapfill" / "default_db";
-    if (fs::is_directory(installed, ec)) return installed.string();
+    // <prefix>/libexec/mocapfill/mocapfill-full, which runs the verbs that use it, or an
+    // executable in <prefix>/bin.
+    for (const fs::path& prefix : {exe.parent_path().parent_path().parent_path(), exe.parent_path().parent_path()}) {
+      const fs::path installed = prefix / "share" / "mocapfill" / "default_db";
+      if (fs::is_directory(installed, ec)) return installed.string();
+    }
   }
   const fs::path source(MOCAPFILL_SOURCE_DEFAULT_DB);
   if (!source.empty() && fs::is_directory(source, ec)) return source.string();

@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 
 // Where the module may be, in order: $MOCAPFILL_ASSIMP_MODULE (an explicit file), beside
 // the executable (the build tree), <prefix>/lib/mocapfill/ (installed: the executable is
-// in <prefix>/bin), and the path it was built at (test programs in the build tree).
+// in <prefix>/bin, or mocapfill-full in <prefix>/libexec/mocapfill), and the path it was
+// built at (test programs in the build tree).
 std::vector<std::string> Candidates() {
   std::vector<std::string> paths;
   if (const char* env = std::getenv("MOCAPFILL_ASSIMP_MODULE"); env != nullptr && *env != '\0') {
@@ -35,6 +36,7 @@ std::vector<std::string> Candidates() {
     const fs::path dir = exe.parent_path();
     paths.push_back((dir / assimp_module::kFileName).string());
     paths.push_back((dir.parent_path() / "lib" / "mocapfill" / assimp_module::kFileName).string());
+    paths.push_back((dir.parent_path().parent_path() / "lib" / "mocapfill" / assimp_module::kFileName).string());
   }
   const std::string built = MOCAPFILL_ASSIMP_MODULE_BUILD_PATH;
   if (!built.empty()) paths.push_back(built);

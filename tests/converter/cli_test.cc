@@ -220,5 +220,80 @@ TEST(Cli, PluginIsFoundInTheInstalledLayoutAndOnlyLoadedForAssimpFormats) {
   EXPECT_EQ(bvh.output.find("libassimp"), std::string::npos) << bvh.output;
 }
 
+// A successful conversion over an existing output swaps the new file in (file_io.cc) and
+// leaves nothing else behind; a symbolic link at the output is replaced, not followed, and
+// a folder there is an output failure that leaves the folder alone.
+TEST(Cli, ReplacingAnOutputLeavesExactlyTheNewFile) {
+  const std::string dir = testing::ScratchDir("cli_replace");
+  const std::string in = FixtureBvhFiles().at(0);
+  const std::string out = dir + "/out.glb";
+  { std::ofstream(out) << "previous content"; }
+  ASSERT_EQ(RunCli("convert " + Quote(in) + " " + Quote(out)).exit_code, 0);
+  ASSERT_EQ(RunCli("convert " + Quote(in) + " " + Quote(dir + "/fresh.glb")).exit_code, 0);
+  EXPECT_EQ(ReadAll(out), ReadAll(dir + "/fresh.glb"));
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"fresh.glb", "out.glb"}));
+
+  const std::string target = dir + "/target.txt", link = dir + "/link.glb";
+  { std::ofstream(target) << "link target"; }
+  fs::create_symlink(target, link);
+  ASSERT_EQ(RunCli("convert " + Quote(in) + " " + Quote(link)).exit_code, 0);
+  EXPECT_FALSE(fs::is_symlink(link));
+  EXPECT_EQ(ReadAll(link), ReadAll(dir + "/fresh.glb"));
+  EXPECT_EQ(ReadAll(target), "link target");
+
+  const std::string folder = dir + "/folder.glb";
+  fs::create_directories(folder + "/inside");
+  RunResult r = RunCli("convert " + Quote(in) + " " + Quote(folder));
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("folder.glb"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_directory(folder + "/inside"));
+}
+
+// mocapfill runs convert and inspect itself and hands everything else to mocapfill-full,
+// found beside it (build tree) or in <prefix>/libexec/mocapfill (installed). A conversion
+// never maps the solver's libraries; without mocapfill-full the format verbs still work and
+// the others fail with exit 3 naming what is missing.
+TEST(Cli, FormatVerbsRunInTheFrontEndAndTheRestInMocapfillFull) {
+  const std::string prefix = testing::ScratchDir("cli_front_end");
+  fs::create_directories(prefix + "/bin");
+  fs::create_directories(prefix + "/libexec/mocapfill");
+  const fs::path built = testing::MocapfillExe();
+  fs::copy_file(built, prefix + "/bin/mocapfill");
+  const std::string exe = Quote(prefix + "/bin/mocapfill");
+  const std::string bvh = Quote(FixtureBvhFiles().at(0));
+
+  RunResult alone = RunProgram("", exe, "fill --help");
+  EXPECT_EQ(alone.exit_code, 3) << alone.output;
+  EXPECT_NE(alone.output.find(prefix + "/libexec/mocapfill/mocapfill-full"), std::string::npos) << alone.output;
+  RunResult convert = RunProgram("LD_DEBUG=files", exe, "convert " + bvh + " " + Quote(prefix + "/a.glb"));
+  ASSERT_EQ(convert.exit_code, 0) << convert.output;
+  EXPECT_NE(convert.output.find("file="), std::string::npos) << "no loader report: " << convert.output;
+  for (const char* solver_library : {"libmetis", "libunwind", "libceres", "libglog"})
+    EXPECT_EQ(convert.output.find(solver_library), std::string::npos) << solver_library << ":\n" << convert.output;
+  EXPECT_EQ(RunProgram("", exe, "-q inspect " + bvh).exit_code, 0);
+
+  fs::copy_file(built.parent_path() / "mocapfill-full", prefix + "/libexec/mocapfill/mocapfill-full");
+  RunResult version = RunProgram("", exe, "--version");
+  EXPECT_EQ(version.exit_code, 0) << version.output;
+  EXPECT_NE(version.output.find("mocapfill "), std::string::npos) << version.output;
+  RunResult help = RunProgram("", exe, "fill --help");
+  EXPECT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_NE(help.output.find("Usage: " + prefix + "/bin/mocapfill fill"), std::string::npos) << help.output;
+  RunResult unknown = RunProgram("", exe, "no-such-verb");
+  EXPECT_EQ(unknown.exit_code, 1) << unknown.output;
+  // The installed default database is the one beside <prefix>/share: a broken one there is
+  // reported by its installed path.
+  fs::create_directories(prefix + "/share/mocapfill/default_db");
+  { std::ofstream(prefix + "/share/mocapfill/default_db/broken.bvh") << "HIERARCHY\nROOT"; }
+  RunResult fill = RunProgram("", exe, "fill " + Quote(testing::FixturePath("sketches/walk_proud_002_legs8.glb")) +
+                                           " -o " + Quote(prefix + "/filled.glb"));
+  EXPECT_EQ(fill.exit_code, 2) << fill.output;
+  EXPECT_NE(fill.output.find(prefix + "/share/mocapfill/default_db/broken.bvh"), std::string::npos) << fill.output;
+  EXPECT_FALSE(fs::exists(prefix + "/filled.glb"));
+}
+
 }  // namespace
 }  // namespace mocapfill
