@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <type_traits>
 
 namespace mocapfill {
 
@@ -39,7 +40,8 @@ class FileDescriptor {
 
 // Reads from fd at `bytes[filled...]` until `bytes` is full or the file ends; returns
 // the bytes now held, or -1 on a read error.
-ssize_t ReadInto(int fd, std::string& bytes, size_t filled) {
+template <class Bytes>
+ssize_t ReadInto(int fd, Bytes& bytes, size_t filled) {
   while (filled < bytes.size()) {
     const ssize_t n = ::read(fd, bytes.data() + filled, bytes.size() - filled);
     if (n < 0 && errno == EINTR) continue;
@@ -48,6 +50,43 @@ ssize_t ReadInto(int fd, std::string& bytes, size_t filled) {
     filled += static_cast<size_t>(n);
   }
   return static_cast<ssize_t>(filled);
+}
+
+// The whole file into `Bytes` (std::string or LargeBuffer), with plain POSIX reads into a
+// buffer sized from fstat: a stream-based read copied the file three times and was a tenth
+// of a small conversion.
+template <class Bytes>
+Result<Bytes> ReadWhole(const std::string& path) {
+  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (fd.get() < 0) {
+    const int error = errno;
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return IoError(path + ": is a directory, expected a file");
+    return IoError(path + ": cannot open for reading (" + std::strerror(error) + ")");
+  }
+  struct stat info {};
+  if (::fstat(fd.get(), &info) != 0) return IoError(path + ": read failed");
+  if (S_ISDIR(info.st_mode)) return IoError(path + ": is a directory, expected a file");
+  // Regular files are read in one go; pipes and special files (size 0) in chunks. Either
+  // way reading goes on to the end, in case the file grew since fstat.
+  Bytes bytes;
+  size_t filled = 0;
+  size_t chunk = S_ISREG(info.st_mode) && info.st_size > 0 ? static_cast<size_t>(info.st_size) + 1 : 65536;
+  while (true) {
+    if constexpr (std::is_same_v<Bytes, std::string>) {
+      bytes.reserve(filled + chunk);
+      PrefaultForWrite(bytes.data() + filled, chunk);
+    }
+    bytes.resize(filled + chunk);
+    const ssize_t held = ReadInto(fd.get(), bytes, filled);
+    if (held < 0) return IoError(path + ": read failed");
+    if (static_cast<size_t>(held) < bytes.size()) {
+      bytes.resize(static_cast<size_t>(held));
+      return bytes;
+    }
+    filled = static_cast<size_t>(held);
+    chunk = std::max<size_t>(65536, filled);
+  }
 }
 
 bool WriteAll(int fd, std::string_view bytes) {
@@ -62,38 +101,9 @@ bool WriteAll(int fd, std::string_view bytes) {
 
 }  // namespace
 
-// Plain POSIX reads into a string sized from fstat: a stream-based read copied the file
-// three times and was a tenth of a small conversion.
-Result<std::string> ReadFileBytes(const std::string& path) {
-  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
-  if (fd.get() < 0) {
-    const int error = errno;
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return IoError(path + ": is a directory, expected a file");
-    return IoError(path + ": cannot open for reading (" + std::strerror(error) + ")");
-  }
-  struct stat info {};
-  if (::fstat(fd.get(), &info) != 0) return IoError(path + ": read failed");
-  if (S_ISDIR(info.st_mode)) return IoError(path + ": is a directory, expected a file");
-  // Regular files are read in one go; pipes and special files (size 0) in chunks. Either
-  // way reading goes on to the end, in case the file grew since fstat.
-  std::string bytes;
-  size_t filled = 0;
-  size_t chunk = S_ISREG(info.st_mode) && info.st_size > 0 ? static_cast<size_t>(info.st_size) + 1 : 65536;
-  while (true) {
-    bytes.reserve(filled + chunk);
-    PrefaultForWrite(bytes.data() + filled, chunk);
-    bytes.resize(filled + chunk);
-    const ssize_t held = ReadInto(fd.get(), bytes, filled);
-    if (held < 0) return IoError(path + ": read failed");
-    if (static_cast<size_t>(held) < bytes.size()) {
-      bytes.resize(static_cast<size_t>(held));
-      return bytes;
-    }
-    filled = static_cast<size_t>(held);
-    chunk = std::max<size_t>(65536, filled);
-  }
-}
+Result<std::string> ReadFileBytes(const std::string& path) { return ReadWhole<std::string>(path); }
+
+Result<LargeBuffer> ReadFileToBuffer(const std::string& path) { return ReadWhole<LargeBuffer>(path); }
 
 void PrefaultForWrite(void* data, size_t bytes) {
 #ifdef MADV_POPULATE_WRITE

@@ -9,12 +9,15 @@
 #include <string>
 #include <string_view>
 
+#include "formats/large_buffer.h"
 #include "processing/core/status.h"
 
 namespace mocapfill {
 
 // Reads the whole file. Fails with kIoError naming the path.
 Result<std::string> ReadFileBytes(const std::string& path);
+// The same into a LargeBuffer: for motion files, which may be megabytes.
+Result<LargeBuffer> ReadFileToBuffer(const std::string& path);
 
 // Writes `bytes` to a temporary file beside `path`, then renames it over `path`, so a
 // crash or error never leaves a partial file. Fails with kIoError naming the path.

@@ -9,3 +9,5 @@ mocapfill_add_test(bvh_tests
           ${CMAKE_CURRENT_LIST_DIR}/bvh_corpus_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_parallel_test.cc
   LIBS mocapfill_bvh)
+# Whole-file reads and LargeBuffer.
+mocapfill_add_test(file_io_tests SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc LIBS mocapfill_format_common)

@@ -1,0 +1,89 @@
+#include "formats/large_buffer.h"
+
+#include <sys/mman.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <utility>
+
+namespace mocapfill {
+
+namespace {
+
+constexpr size_t kHugePage = size_t{2} << 20;
+constexpr size_t kOwnMappingMinBytes = size_t{1} << 20;
+
+size_t RoundUp(size_t bytes, size_t to) { return (bytes + to - 1) / to * to; }
+
+}  // namespace
+
+LargeBuffer::LargeBuffer(size_t bytes) : size_(bytes), capacity_(bytes) {
+  if (bytes < kOwnMappingMinBytes) {
+    data_ = static_cast<unsigned char*>(std::malloc(bytes > 0 ? bytes : 1));
+    if (data_ == nullptr) throw std::bad_alloc();
+    return;
+  }
+  // Over-map by one huge page, then trim to a 2 MiB-aligned span, so that every 2 MiB of
+  // it can be one page.
+  const size_t span = RoundUp(bytes, kHugePage);
+  void* raw = ::mmap(nullptr, span + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  const uintptr_t begin = reinterpret_cast<uintptr_t>(raw);
+  const uintptr_t aligned = RoundUp(begin, kHugePage);
+  if (aligned > begin) ::munmap(raw, aligned - begin);
+  const uintptr_t end = begin + span + kHugePage;
+  if (end > aligned + span) ::munmap(reinterpret_cast<void*>(aligned + span), end - (aligned + span));
+  mapping_ = reinterpret_cast<void*>(aligned);
+  mapping_bytes_ = span;
+  capacity_ = span;
+#ifdef MADV_HUGEPAGE
+  ::madvise(mapping_, mapping_bytes_, MADV_HUGEPAGE);  // a hint: without huge pages, small ones serve
+#endif
+  data_ = static_cast<unsigned char*>(mapping_);
+}
+
+LargeBuffer::LargeBuffer(LargeBuffer&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)),
+      size_(std::exchange(other.size_, 0)),
+      capacity_(std::exchange(other.capacity_, 0)),
+      mapping_(std::exchange(other.mapping_, nullptr)),
+      mapping_bytes_(std::exchange(other.mapping_bytes_, 0)) {}
+
+LargeBuffer& LargeBuffer::operator=(LargeBuffer&& other) noexcept {
+  if (this != &other) {
+    Release();
+    data_ = std::exchange(other.data_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+    capacity_ = std::exchange(other.capacity_, 0);
+    mapping_ = std::exchange(other.mapping_, nullptr);
+    mapping_bytes_ = std::exchange(other.mapping_bytes_, 0);
+  }
+  return *this;
+}
+
+LargeBuffer::~LargeBuffer() { Release(); }
+
+void LargeBuffer::Release() {
+  if (mapping_ != nullptr) {
+    ::munmap(mapping_, mapping_bytes_);
+  } else {
+    std::free(data_);
+  }
+  data_ = nullptr;
+  mapping_ = nullptr;
+  size_ = capacity_ = mapping_bytes_ = 0;
+}
+
+void LargeBuffer::resize(size_t bytes) {
+  if (bytes <= capacity_ && data_ != nullptr) {
+    size_ = bytes;
+    return;
+  }
+  LargeBuffer larger(bytes);
+  if (size_ > 0) std::memcpy(larger.data_, data_, size_);
+  *this = std::move(larger);
+}
+
+}  // namespace mocapfill

@@ -1,0 +1,45 @@
+// One block of memory for a whole input text or a whole set of output tracks. Not
+// zero-filled, and from 1 MiB up mapped on its own, 2 MiB-aligned and marked for
+// transparent huge pages where the kernel offers them (madvise mode, as on Debian). In the
+// VMs mocapfill is measured on, first touching a 4 KiB page costs about 3 us; a CMU clip's
+// text and tracks span 900 such pages, and 2 MiB pages made 8 MiB cost 1.3 ms to fault
+// in instead of 6.5 ms, and 0.06 ms to release instead of 0.8 ms.
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+
+namespace mocapfill {
+
+class LargeBuffer {
+ public:
+  LargeBuffer() = default;
+  // `bytes` bytes of unspecified content. Throws std::bad_alloc when memory is short.
+  explicit LargeBuffer(size_t bytes);
+  LargeBuffer(LargeBuffer&& other) noexcept;
+  LargeBuffer& operator=(LargeBuffer&& other) noexcept;
+  LargeBuffer(const LargeBuffer&) = delete;
+  LargeBuffer& operator=(const LargeBuffer&) = delete;
+  ~LargeBuffer();
+
+  unsigned char* data() { return data_; }
+  const unsigned char* data() const { return data_; }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  std::string_view view() const { return {reinterpret_cast<const char*>(data_), size_}; }
+
+  // Changes the size; growing past the capacity moves the bytes to a larger block (the new
+  // bytes are unspecified).
+  void resize(size_t bytes);
+
+ private:
+  void Release();
+
+  unsigned char* data_ = nullptr;
+  size_t size_ = 0;
+  size_t capacity_ = 0;
+  void* mapping_ = nullptr;  // when mapped on its own: the mapping, and its length
+  size_t mapping_bytes_ = 0;
+};
+
+}  // namespace mocapfill

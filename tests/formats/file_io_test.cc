@@ -1,0 +1,97 @@
+// Whole-file reads into LargeBuffer (regular files, pipes, failures) and the buffer itself.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "formats/file_io.h"
+#include "formats/large_buffer.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+std::string Pattern(size_t bytes) {
+  std::string s(bytes, '\0');
+  for (size_t i = 0; i < bytes; ++i) s[i] = static_cast<char>('a' + (i * 7 + i / 4093) % 26);
+  return s;
+}
+
+TEST(LargeBuffer, HoldsWhatIsWrittenBelowAndAboveItsOwnMappingSize) {
+  for (size_t bytes : {size_t{0}, size_t{1}, size_t{4096}, (size_t{1} << 20) - 1, size_t{1} << 20,
+                       (size_t{5} << 20) + 123}) {
+    LargeBuffer buffer(bytes);
+    ASSERT_EQ(buffer.size(), bytes);
+    ASSERT_NE(buffer.data(), nullptr);
+    const std::string pattern = Pattern(bytes);
+    std::memcpy(buffer.data(), pattern.data(), bytes);
+    EXPECT_EQ(buffer.view(), pattern) << bytes;
+  }
+}
+
+TEST(LargeBuffer, GrowingKeepsTheBytesAndMovingHandsThemOver) {
+  const std::string pattern = Pattern(300000);
+  LargeBuffer buffer(pattern.size());
+  std::memcpy(buffer.data(), pattern.data(), pattern.size());
+  buffer.resize(3 << 20);  // past 1 MiB: moves to its own mapping
+  ASSERT_EQ(buffer.size(), size_t{3} << 20);
+  EXPECT_EQ(buffer.view().substr(0, pattern.size()), pattern);
+  buffer.resize(10);
+  EXPECT_EQ(buffer.view(), pattern.substr(0, 10));
+  LargeBuffer moved(std::move(buffer));
+  EXPECT_EQ(moved.view(), pattern.substr(0, 10));
+  EXPECT_TRUE(buffer.empty());  // NOLINT: moved-from is empty by contract
+  LargeBuffer assigned;
+  assigned = std::move(moved);
+  EXPECT_EQ(assigned.view(), pattern.substr(0, 10));
+}
+
+TEST(ReadFileToBuffer, ReadsRegularFilesWhole) {
+  const std::string dir = testing::ScratchDir("read_file_to_buffer");
+  for (size_t bytes : {size_t{0}, size_t{17}, (size_t{2} << 20) + 5}) {
+    const std::string path = dir + "/f" + std::to_string(bytes);
+    const std::string pattern = Pattern(bytes);
+    ASSERT_TRUE(WriteFileAtomic(path, pattern).ok());
+    const Result<LargeBuffer> read = ReadFileToBuffer(path);
+    ASSERT_TRUE(read.ok()) << read.status().message();
+    EXPECT_EQ(read->view(), pattern) << bytes;
+    const Result<std::string> as_string = ReadFileBytes(path);
+    ASSERT_TRUE(as_string.ok());
+    EXPECT_EQ(*as_string, pattern);
+  }
+}
+
+// A pipe has no size to go by: it is read in growing chunks to its end.
+TEST(ReadFileToBuffer, ReadsPipesToTheirEnd) {
+  const std::string dir = testing::ScratchDir("read_file_to_buffer_pipe");
+  const std::string fifo = dir + "/pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string pattern = Pattern(700000);
+  std::thread writer([&] {
+    std::ofstream out(fifo, std::ios::binary);
+    out.write(pattern.data(), static_cast<std::streamsize>(pattern.size()));
+  });
+  const Result<LargeBuffer> read = ReadFileToBuffer(fifo);
+  writer.join();
+  ASSERT_TRUE(read.ok()) << read.status().message();
+  EXPECT_EQ(read->view(), pattern);
+}
+
+TEST(ReadFileToBuffer, FailuresNameThePath) {
+  const std::string dir = testing::ScratchDir("read_file_to_buffer_fail");
+  const Result<LargeBuffer> missing = ReadFileToBuffer(dir + "/missing.bvh");
+  EXPECT_EQ(missing.status().code(), ErrorCode::kIoError);
+  EXPECT_NE(missing.status().message().find(dir + "/missing.bvh: cannot open"), std::string::npos);
+  const Result<LargeBuffer> folder = ReadFileToBuffer(dir);
+  EXPECT_EQ(folder.status().code(), ErrorCode::kIoError);
+  EXPECT_NE(folder.status().message().find("is a directory"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mocapfill
