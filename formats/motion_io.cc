@@ -3,6 +3,7 @@
 #include "formats/assimp/assimp_loader.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/bvh/bvh_writer.h"
+#include "formats/bvh_glb/bvh_to_glb.h"
 #include "formats/file_io.h"
 #include "formats/gltf/gltf_reader.h"
 #include "formats/gltf/gltf_writer.h"
@@ -36,8 +37,11 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
   if (IsAssimpExtension(ext)) return ReadWithAssimpModule(path, options);
   if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
     return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
+  if (ext == ".bvh") {
+    ASSIGN_OR_RETURN(const LargeBuffer text, ReadFileToBuffer(path));
+    return ReadBvh(text.view(), path, options);
+  }
   ASSIGN_OR_RETURN(std::string bytes, ReadFileBytes(path));
-  if (ext == ".bvh") return ReadBvh(bytes, path, options);
   return ReadGltf(bytes, path, options);
 }
 
@@ -59,6 +63,32 @@ Status ExportFile(const Scene& scene, const std::string& path, const ExportOptio
   }
   if (!bytes.ok()) return bytes.status().WithContext(path);
   return WriteFileAtomic(path, *bytes);
+}
+
+ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
+                          const ExportOptions& export_options) {
+  ConvertResult result;
+  if (LowerExtension(input) == ".bvh" && LowerExtension(output) == ".glb") {
+    Result<LargeBuffer> text = ReadFileToBuffer(input);
+    if (!text.ok()) {
+      result.status = text.status();
+      return result;
+    }
+    if (std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options)) {
+      result.status = WriteFileAtomicParts(output, {glb->head, glb->tracks.view()});
+      result.failed_writing = !result.status.ok();
+      return result;
+    }
+  }
+  Result<Scene> scene = ImportFile(input, import_options);
+  if (!scene.ok()) {
+    result.status = scene.status();
+    return result;
+  }
+  result.warnings = std::move(scene->warnings);
+  result.status = ExportFile(*scene, output, export_options);
+  result.failed_writing = !result.status.ok();
+  return result;
 }
 
 }  // namespace mocapfill

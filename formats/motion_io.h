@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
@@ -43,6 +44,19 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options =
 // Writes .gltf, .glb or .bvh by the extension of `path`. The write is atomic: the file
 // appears complete or not at all, and an existing file is replaced only on success.
 Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options = {});
+
+// ImportFile then ExportFile, in one step: what a converter calls. A BVH becoming a .glb is
+// streamed (formats/bvh_glb): its rows go straight into the .glb's float32 tracks, with no
+// double-precision clip in between, when the import is a plain one (no warning, Y-up); the
+// bytes written are the same either way. `failed_writing` tells an output failure from an
+// input failure.
+struct ConvertResult {
+  Status status;
+  bool failed_writing = false;
+  std::vector<std::string> warnings;  // of the import
+};
+ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
+                          const ExportOptions& export_options);
 
 // True when the extension is one ImportFile reads / ExportFile writes.
 bool IsImportExtension(const std::string& path);

@@ -61,16 +61,11 @@ int ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& imp
     PrintError(job.output + ": refusing to overwrite input file");
     return kExitOutput;
   }
-  Result<Scene> scene = ImportFile(job.input, import);
-  if (!scene.ok()) {
-    PrintError(scene.status().message());
-    return ExitCodeFor(scene.status(), Stage::kInput);
-  }
-  for (const std::string& warning : scene->warnings) PrintWarning(job.input + ": " + warning);
-  const Status written = ExportFile(*scene, job.output, args.export_options);
-  if (!written.ok()) {
-    PrintError(written.message());
-    return ExitCodeFor(written, Stage::kOutput);
+  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options);
+  for (const std::string& warning : converted.warnings) PrintWarning(job.input + ": " + warning);
+  if (!converted.status.ok()) {
+    PrintError(converted.status.message());
+    return ExitCodeFor(converted.status, converted.failed_writing ? Stage::kOutput : Stage::kInput);
   }
   return kExitOk;
 }

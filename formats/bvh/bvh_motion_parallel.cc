@@ -12,20 +12,6 @@ namespace {
 
 using rows::JointSampler;
 
-// Rows of a valid motion section: lines holding something other than blanks. (Rows that
-// end in a lone CR are undercounted; the parse then disagrees with the count and the
-// serial loop takes over.)
-int64_t CountRows(const char* p, const char* end) {
-  int64_t count = 0;
-  while (true) {
-    while (p < end && IsBvhSpace(*p)) ++p;
-    if (p == end) return count;
-    ++count;
-    const void* line_break = std::memchr(p, '\n', static_cast<size_t>(end - p));
-    p = line_break != nullptr ? static_cast<const char*>(line_break) + 1 : end;
-  }
-}
-
 struct Chunk {
   bool ok = false;
   int64_t rows = 0;
@@ -78,18 +64,43 @@ void JoinHemispheres(const std::vector<JointSampler>& samplers, int64_t split_fr
 
 }  // namespace
 
+// Rows of a valid motion section: lines holding something other than blanks. (Rows that
+// end in a lone CR are undercounted; the parse then disagrees with the count and the
+// serial loop takes over.)
+int64_t CountRows(const char* p, const char* end) {
+  int64_t count = 0;
+  while (true) {
+    while (p < end && IsBvhSpace(*p)) ++p;
+    if (p == end) return count;
+    ++count;
+    const void* line_break = std::memchr(p, '\n', static_cast<size_t>(end - p));
+    p = line_break != nullptr ? static_cast<const char*>(line_break) + 1 : end;
+  }
+}
+
+std::optional<RowSplit> SplitRowsInHalf(std::string_view rows_text) {
+  const char* begin = rows_text.data();
+  const void* split_break = std::memchr(begin + rows_text.size() / 2, '\n', rows_text.size() - rows_text.size() / 2);
+  if (split_break == nullptr) return std::nullopt;
+  RowSplit split;
+  split.split = static_cast<const char*>(split_break) + 1;
+  split.first_rows = CountRows(begin, split.split);
+  if (split.first_rows == 0) return std::nullopt;
+  return split;
+}
+
 bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<JointSampler>& samplers, int channels,
                                int64_t declared_frames, MotionClip& clip) {
   const size_t joints = samplers.size();
   const char* begin = rows_text.data();
   const char* end = begin + rows_text.size();
-  const void* split_break = std::memchr(begin + rows_text.size() / 2, '\n', rows_text.size() - rows_text.size() / 2);
-  if (split_break == nullptr) return false;
-  const char* split = static_cast<const char*>(split_break) + 1;
+  const std::optional<RowSplit> halves = SplitRowsInHalf(rows_text);
+  if (!halves) return false;
+  const char* split = halves->split;
+  const int64_t first_rows = halves->first_rows;
   // Every value takes at least two bytes: a declared count beyond that is not trusted.
   const int64_t max_rows = static_cast<int64_t>(rows_text.size() / (2 * static_cast<size_t>(channels))) + 1;
-  const int64_t first_rows = CountRows(begin, split);
-  if (first_rows == 0 || declared_frames <= first_rows || declared_frames > max_rows ||
+  if (declared_frames <= first_rows || declared_frames > max_rows ||
       static_cast<size_t>(declared_frames) * joints > rows::kMaxJointFrames)
     return false;
   // Eigen's default constructors leave coefficients alone: sizing touches no memory.

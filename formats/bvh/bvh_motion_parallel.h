@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +19,17 @@ namespace mocapfill::bvh {
 // Motion text smaller than this is parsed on the calling thread: starting a thread costs
 // more than it saves.
 inline constexpr size_t kParallelMotionMinBytes = size_t{128} << 10;
+
+// Rows of `rows_text` from `p` to `end`: lines holding something other than blanks.
+int64_t CountRows(const char* p, const char* end);
+
+// `rows_text` split at the first line break past its middle, and the rows before the split.
+struct RowSplit {
+  const char* split = nullptr;
+  int64_t first_rows = 0;
+};
+// nullopt when there is no line break past the middle or no row before it.
+std::optional<RowSplit> SplitRowsInHalf(std::string_view rows_text);
 
 // Parses every row of `rows_text` (the text after the Frame Time line) into `clip`
 // (rotations, translations, num_frames). Returns false, with the clip's arrays in an

@@ -7,16 +7,21 @@
 #include "formats/bvh/bvh_hierarchy.h"
 #include "formats/bvh/bvh_lexer.h"
 #include "formats/bvh/bvh_motion.h"
+#include "formats/bvh/bvh_scene.h"
 #include "formats/units_axes.h"
 #include "processing/core/kinematics.h"
 
 namespace mocapfill {
 
+namespace bvh {
+
 namespace {
 
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
-Status CheckOptions(const ImportOptions& options) {
+}  // namespace
+
+Status CheckImportOptions(const ImportOptions& options) {
   if (options.up != "auto" && options.up != "y" && options.up != "z")
     return InvalidArgument("unknown up axis '" + options.up + "' (expected auto, y or z)");
   if (options.unit != "auto" && !UnitScaleByName(options.unit))
@@ -24,15 +29,20 @@ Status CheckOptions(const ImportOptions& options) {
   return OkStatus();
 }
 
-Result<Skeleton> BuildSkeleton(const bvh::ParsedHierarchy& hierarchy, const std::string& path) {
+std::string_view WithoutByteOrderMark(std::string_view text) {
+  if (text.substr(0, kUtf8Bom.size()) == kUtf8Bom) text.remove_prefix(kUtf8Bom.size());
+  return text;
+}
+
+Result<Skeleton> BuildSkeleton(const ParsedHierarchy& hierarchy, const std::string& path) {
   std::vector<Joint> joints;
   joints.reserve(hierarchy.joints.size());
-  for (const bvh::ParsedJoint& parsed : hierarchy.joints) {
+  for (const ParsedJoint& parsed : hierarchy.joints) {
     Joint joint;
     joint.name = parsed.name;
     joint.parent = parsed.parent;
     joint.rest_translation = parsed.offset;
-    for (bvh::Channel c : parsed.layout.channels) joint.bvh_channels.emplace_back(bvh::ChannelName(c));
+    for (Channel c : parsed.layout.channels) joint.bvh_channels.emplace_back(ChannelName(c));
     joint.end_site = parsed.end_site;
     joints.push_back(std::move(joint));
   }
@@ -41,8 +51,7 @@ Result<Skeleton> BuildSkeleton(const bvh::ParsedHierarchy& hierarchy, const std:
   return skeleton;
 }
 
-// Frame-count mismatch: the rows present win; a warning, or an error under strict.
-Status CheckFrameCount(const bvh::MotionHeader& header, int rows, const std::string& path, bool strict,
+Status CheckFrameCount(const MotionHeader& header, int rows, const std::string& path, bool strict,
                        std::vector<std::string>& warnings) {
   const std::string where = path + ":" + std::to_string(header.frames_location.line) + ":" +
                             std::to_string(header.frames_location.column) + ": ";
@@ -57,11 +66,45 @@ Status CheckFrameCount(const bvh::MotionHeader& header, int rows, const std::str
   return OkStatus();
 }
 
+Result<UnitChoice> ResolveBvhUnit(const Skeleton& skeleton, const ImportOptions& options) {
+  const double height = RestPoseExtent(skeleton, options.up == "z" ? 2 : 1);
+  return ResolveUnit(options.unit, "cm", height);
+}
+
+SourceInfo BvhSource(const std::string& path, const MotionHeader& header, const UnitChoice& unit, bool z_up) {
+  SourceInfo source;
+  source.format = "bvh";
+  source.path = path;
+  source.source_frame_time_s = header.frame_time_s;
+  source.source_frame_time_text = header.frame_time_text;
+  source.declared_frames = static_cast<int>(header.declared_frames);
+  source.unit_name = unit.name;
+  source.unit_scale_to_m = unit.scale_to_m;
+  source.unit_detected = unit.detected;
+  source.up_axis.assign(1, z_up ? 'z' : 'y');  // (char form: gcc 12 -Wrestrict false positive)
+  return source;
+}
+
+std::string ClipName(const std::string& path) {
+  const std::string stem = std::filesystem::path(path).stem().string();
+  return stem.empty() ? std::string("bvh") : stem;
+}
+
 bool HasPositionChannels(const Joint& joint) {
   for (const std::string& channel : joint.bvh_channels)
     if (channel.find("position") != std::string::npos) return true;
   return false;
 }
+
+void AdoptConstantPosition(Joint& joint, const Eigen::Vector3d& used) {
+  if (used == joint.rest_translation) return;
+  joint.bvh_offset = joint.rest_translation;
+  joint.rest_translation = used;
+}
+
+}  // namespace bvh
+
+namespace {
 
 // MotionClip::DetectAnimatedTranslations' test (a frame off frame 0 by more than its
 // default tolerance), run only on joints with position channels: the others hold their
@@ -74,50 +117,28 @@ bool TranslationMoves(const MotionClip& clip, int joint) {
   return false;
 }
 
-// Joints whose position channels hold one value over the whole clip are not animated:
-// that value becomes the rest translation (the pose actually used), the original OFFSET
-// is kept for BVH export, and every frame holds exactly the rest value.
+// Joints whose position channels hold one value over the whole clip are not animated
+// (bvh::AdoptConstantPosition); every frame then holds exactly the rest value.
 void AdoptConstantPositions(Scene& scene) {
   MotionClip& clip = scene.clips[0];
   clip.translation_animated.assign(clip.num_joints, 0);
   for (int j = 0; j < clip.num_joints; ++j) {
     Joint& joint = scene.skeleton.mutable_joint(j);
-    if (!HasPositionChannels(joint)) continue;
+    if (!bvh::HasPositionChannels(joint)) continue;
     clip.translation_animated[j] = TranslationMoves(clip, j);
     if (clip.translation_animated[j]) continue;
     const Eigen::Vector3d used = clip.translation(0, j);
     if (used == joint.rest_translation) continue;
-    joint.bvh_offset = joint.rest_translation;
-    joint.rest_translation = used;
+    bvh::AdoptConstantPosition(joint, used);
     for (int f = 0; f < clip.num_frames; ++f) clip.translation(f, j) = used;
   }
-}
-
-Status ApplyUnitsAndAxes(Scene& scene, const ImportOptions& options) {
-  const bool z_up = options.up == "z";
-  const double height = RestPoseExtent(scene.skeleton, z_up ? 2 : 1);
-  ASSIGN_OR_RETURN(const UnitChoice unit, ResolveUnit(options.unit, "cm", height));
-  ScaleScene(scene, unit.scale_to_m);
-  scene.source.unit_name = unit.name;
-  scene.source.unit_scale_to_m = unit.scale_to_m;
-  scene.source.unit_detected = unit.detected;
-  AdoptConstantPositions(scene);
-  scene.source.up_axis.assign(1, z_up ? 'z' : 'y');  // (char form: gcc 12 -Wrestrict false positive)
-  if (z_up) ConvertZUpToYUp(scene);
-  return OkStatus();
-}
-
-std::string ClipName(const std::string& path) {
-  const std::string stem = std::filesystem::path(path).stem().string();
-  return stem.empty() ? std::string("bvh") : stem;
 }
 
 }  // namespace
 
 Result<Scene> ReadBvh(std::string_view text, const std::string& path, const ImportOptions& options) {
-  RETURN_IF_ERROR(CheckOptions(options));
-  if (text.substr(0, kUtf8Bom.size()) == kUtf8Bom) text.remove_prefix(kUtf8Bom.size());
-  bvh::BvhLexer lexer(text, path);
+  RETURN_IF_ERROR(bvh::CheckImportOptions(options));
+  bvh::BvhLexer lexer(bvh::WithoutByteOrderMark(text), path);
   ASSIGN_OR_RETURN(bvh::ParsedHierarchy hierarchy, bvh::ParseHierarchy(lexer));
   ASSIGN_OR_RETURN(const bvh::MotionHeader header, bvh::ParseMotionHeader(lexer));
   if (hierarchy.num_channels == 0)
@@ -126,19 +147,19 @@ Result<Scene> ReadBvh(std::string_view text, const std::string& path, const Impo
   Scene scene;
   scene.warnings = std::move(hierarchy.warnings);
   MotionClip clip;
-  clip.name = ClipName(path);
+  clip.name = bvh::ClipName(path);
   clip.sample_rate_hz = bvh::SnapFrameRate(header.frame_time_s);
   RETURN_IF_ERROR(bvh::ParseMotionRows(lexer, hierarchy, header, clip, options.threads));
-  RETURN_IF_ERROR(CheckFrameCount(header, clip.num_frames, path, options.strict, scene.warnings));
-  ASSIGN_OR_RETURN(scene.skeleton, BuildSkeleton(hierarchy, path));
-
-  scene.source.format = "bvh";
-  scene.source.path = path;
-  scene.source.source_frame_time_s = header.frame_time_s;
-  scene.source.source_frame_time_text = header.frame_time_text;
-  scene.source.declared_frames = static_cast<int>(header.declared_frames);
+  RETURN_IF_ERROR(bvh::CheckFrameCount(header, clip.num_frames, path, options.strict, scene.warnings));
+  ASSIGN_OR_RETURN(scene.skeleton, bvh::BuildSkeleton(hierarchy, path));
   scene.clips.push_back(std::move(clip));
-  RETURN_IF_ERROR(ApplyUnitsAndAxes(scene, options));
+
+  const bool z_up = options.up == "z";
+  ASSIGN_OR_RETURN(const UnitChoice unit, bvh::ResolveBvhUnit(scene.skeleton, options));
+  scene.source = bvh::BvhSource(path, header, unit, z_up);
+  ScaleScene(scene, unit.scale_to_m);
+  AdoptConstantPositions(scene);
+  if (z_up) ConvertZUpToYUp(scene);
   // Finite values, unit and hemisphere-continuous quaternions hold by construction, so
   // neither Validate() nor MakeContinuous() passes are needed here.
   scene.clips[0].KeyAllFrames();

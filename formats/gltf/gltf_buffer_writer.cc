@@ -36,6 +36,15 @@ float* BufferWriter::AddFloatView(size_t count, int& view) {
   return reinterpret_cast<float*>(bytes_.data() + offset);  // 4-byte aligned: offset % 4 == 0
 }
 
+int BufferWriter::AddViewAt(size_t byte_offset, size_t byte_length) {
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = byte_offset;
+  view.byteLength = byte_length;
+  model_.bufferViews.push_back(std::move(view));
+  return static_cast<int>(model_.bufferViews.size()) - 1;
+}
+
 int BufferWriter::AddAccessor(int view, size_t byte_offset, int component_type, int type, size_t count,
                               const std::vector<double>& min, const std::vector<double>& max) {
   tinygltf::Accessor accessor;

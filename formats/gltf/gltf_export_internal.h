@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ class BufferWriter {
   // the pointer is valid until the next Add*. Sets `view` to the view index.
   float* AddFloatView(size_t count, int& view);
 
+  // Adds a view over bytes the caller keeps apart (a .glb's binary chunk packed elsewhere);
+  // only for a writer that holds no bytes itself. Returns the view index.
+  int AddViewAt(size_t byte_offset, size_t byte_length);
+
   // Adds an accessor over `view` at `byte_offset`; min/max only when given.
   int AddAccessor(int view, size_t byte_offset, int component_type, int type, size_t count,
                   const std::vector<double>& min = {}, const std::vector<double>& max = {});
@@ -61,5 +66,21 @@ Status ExportMeshes(const Scene& scene, BufferWriter& buffer, tinygltf::Model& m
 // tinygltf_impl.cc), without copying the binary buffer into the model and a stream.
 // The model must have no buffers and no images.
 std::string GlbJson(const tinygltf::Model& model, size_t bin_bytes);
+
+// GlbJson's text for a model of nodes, accessors, buffer views, animations, scenes and an
+// asset only (what a BVH source exports), written without tinygltf's serialiser
+// (glb_json.cc); nullopt for any other model.
+std::optional<std::string> SkeletonGlbJson(const tinygltf::Model& model, size_t bin_bytes);
+
+// tinygltf's own serialisation of the same, for everything else (and tests).
+std::string TinygltfGlbJson(const tinygltf::Model& model, size_t bin_bytes);
+
+// For tests: the JSON chunk WriteGlb makes for `scene`, written by SkeletonGlbJson (nullopt
+// when it does not handle the model) and by tinygltf's serialiser.
+struct GlbJsonPair {
+  std::optional<std::string> direct;
+  std::string tinygltf;
+};
+Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene);
 
 }  // namespace mocapfill::gltf_internal

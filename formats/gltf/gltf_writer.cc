@@ -19,7 +19,6 @@ namespace {
 using gltf_internal::BufferWriter;
 using Value = tinygltf::Value;
 
-std::string Str(int64_t v) { return std::to_string(v); }
 
 Value NumberArray(const Eigen::Vector3d& v) { return Value(Value::Array{Value(v.x()), Value(v.y()), Value(v.z())}); }
 
@@ -48,47 +47,22 @@ void AddJointNodes(const Skeleton& skeleton, tinygltf::Model& model) {
   }
 }
 
-// Frame times as float32 (computed in double, then rounded), strictly increasing.
-Status FrameTimes(const MotionClip& clip, float* times) {
-  for (int f = 0; f < clip.num_frames; ++f) {
-    times[f] = static_cast<float>(f / clip.sample_rate_hz);
-    if (f > 0 && times[f] <= times[f - 1])
-      return Unsupported("clip '" + clip.name + "': frame times " + Str(f - 1) + " and " + Str(f) +
-                         " are equal in float32; the clip is too long for its frame rate");
-  }
-  return OkStatus();
-}
-
-// Unit quaternions (x, y, z, w) as float32, normalised after rounding (the validator checks
-// float lengths) and kept on one hemisphere from frame to frame; joint j's track starts
-// at out + 4 j n. Walked frame by frame, the order the clip stores them in.
+// Unit quaternions as float32 (gltf_tracks.h), kept on one hemisphere from frame to frame;
+// joint j's track starts at out + 4 j n. Walked frame by frame, the order the clip stores
+// them in.
 void WriteRotations(const MotionClip& clip, float* out) {
   const size_t n = clip.num_frames, joints = clip.num_joints;
   std::vector<Eigen::Vector4d> previous(joints, Eigen::Vector4d::Zero());
-  for (size_t f = 0; f < n; ++f) {
-    for (size_t j = 0; j < joints; ++j) {
-      const Eigen::Quaterniond& q = clip.rotations[f * joints + j];
-      Eigen::Vector4d v = Eigen::Vector4d(q.x(), q.y(), q.z(), q.w()).normalized();
-      if (v.dot(previous[j]) < 0) v = -v;
-      previous[j] = v;
-      const Eigen::Vector4d rounded = v.cast<float>().cast<double>();
-      const Eigen::Vector4f unit = (rounded / rounded.norm()).cast<float>();
-      float* o = out + 4 * (j * n + f);
-      for (int c = 0; c < 4; ++c) o[c] = unit[c];
-    }
-  }
+  for (size_t f = 0; f < n; ++f)
+    for (size_t j = 0; j < joints; ++j) PackRotation(clip.rotations[f * joints + j], previous[j], out + 4 * (j * n + f));
 }
 
 // Translations of the `moving` joints as float32; the k-th joint's track starts at out + 3 k n.
 void WriteTranslations(const MotionClip& clip, const std::vector<int>& moving, float* out) {
   const size_t n = clip.num_frames;
-  for (size_t f = 0; f < n; ++f) {
-    for (size_t k = 0; k < moving.size(); ++k) {
-      const Eigen::Vector3d& t = clip.translation(static_cast<int>(f), moving[k]);
-      float* o = out + 3 * (k * n + f);
-      for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(t[c]);
-    }
-  }
+  for (size_t f = 0; f < n; ++f)
+    for (size_t k = 0; k < moving.size(); ++k)
+      PackTranslation(clip.translation(static_cast<int>(f), moving[k]), out + 3 * (k * n + f));
 }
 
 void AddSampledChannel(tinygltf::Animation& animation, int input, int output, int node, const char* path) {
@@ -104,37 +78,56 @@ void AddSampledChannel(tinygltf::Animation& animation, int input, int output, in
   animation.channels.push_back(std::move(channel));
 }
 
-// One shared time accessor, then every joint's rotations, then the animated translations,
-// each written straight into the binary buffer.
-Status AddAnimation(const MotionClip& clip, BufferWriter& buffer, tinygltf::Model& model) {
-  const size_t n = clip.num_frames;
+std::vector<int> MovingJoints(const std::vector<std::uint8_t>& translation_animated) {
   std::vector<int> moving;
-  for (int j = 0; j < clip.num_joints; ++j)
-    if (clip.translation_animated[j]) moving.push_back(j);
-  buffer.Reserve(n * sizeof(float) * (1 + 4 * static_cast<size_t>(clip.num_joints) + 3 * moving.size()) + 8);
+  for (size_t j = 0; j < translation_animated.size(); ++j)
+    if (translation_animated[j]) moving.push_back(static_cast<int>(j));
+  return moving;
+}
 
-  int time_view = -1;
-  float* times = buffer.AddFloatView(n, time_view);
-  RETURN_IF_ERROR(FrameTimes(clip, times));
-  const double first_s = times[0], last_s = times[n - 1];
-  const int input = buffer.AddAccessor(time_view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, n, {first_s},
-                                       {last_s});
-  int rotation_view = -1;
-  WriteRotations(clip, buffer.AddFloatView(n * 4 * clip.num_joints, rotation_view));
-  int translation_view = -1;
-  if (!moving.empty()) WriteTranslations(clip, moving, buffer.AddFloatView(n * 3 * moving.size(), translation_view));
+// The buffer views of one clip's tracks (ClipTrackLayout): times, rotations, translations.
+struct ClipViews {
+  int time = -1;
+  int rotation = -1;
+  int translation = -1;  // -1 when no joint's translation is animated
+};
 
+// The accessors, samplers and channels of one clip over its views: one shared time accessor
+// with min/max, a rotation accessor per joint, a translation accessor per moving joint.
+void AddAnimationChannels(const std::string& name, const ClipTrackLayout& layout, const std::vector<int>& moving,
+                          double first_s, double last_s, const ClipViews& views, BufferWriter& buffer,
+                          tinygltf::Model& model) {
+  const size_t n = layout.frames;
+  const int input =
+      buffer.AddAccessor(views.time, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, n, {first_s}, {last_s});
   tinygltf::Animation animation;
-  animation.name = clip.name;
-  for (int j = 0; j < clip.num_joints; ++j) {
-    const int output = buffer.AddAccessor(rotation_view, j * n * 16, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, n);
-    AddSampledChannel(animation, input, output, j, "rotation");
+  animation.name = name;
+  for (size_t j = 0; j < layout.joints; ++j) {
+    const int output = buffer.AddAccessor(views.rotation, j * n * 16, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, n);
+    AddSampledChannel(animation, input, output, static_cast<int>(j), "rotation");
   }
   for (size_t k = 0; k < moving.size(); ++k) {
-    const int output = buffer.AddAccessor(translation_view, k * n * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+    const int output = buffer.AddAccessor(views.translation, k * n * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
     AddSampledChannel(animation, input, output, moving[k], "translation");
   }
   model.animations.push_back(std::move(animation));
+}
+
+// One shared time accessor, then every joint's rotations, then the animated translations,
+// each written straight into the binary buffer.
+Status AddAnimation(const MotionClip& clip, BufferWriter& buffer, tinygltf::Model& model) {
+  const std::vector<int> moving = MovingJoints(clip.translation_animated);
+  const ClipTrackLayout layout{static_cast<size_t>(clip.num_frames), static_cast<size_t>(clip.num_joints), moving.size()};
+  const size_t n = layout.frames;
+  buffer.Reserve(layout.TotalFloats() * sizeof(float) + 8);
+
+  ClipViews views;
+  float* times = buffer.AddFloatView(n, views.time);
+  RETURN_IF_ERROR(PackFrameTimes(clip.name, n, clip.sample_rate_hz, times));
+  const double first_s = times[0], last_s = times[n - 1];
+  WriteRotations(clip, buffer.AddFloatView(n * 4 * layout.joints, views.rotation));
+  if (!moving.empty()) WriteTranslations(clip, moving, buffer.AddFloatView(n * 3 * moving.size(), views.translation));
+  AddAnimationChannels(clip.name, layout, moving, first_s, last_s, views, buffer, model);
   return OkStatus();
 }
 
@@ -162,15 +155,16 @@ bool KeysAreDense(const MotionClip& clip) {
   return true;  // sorted, unique and in range (Validate), so the sizes say it all
 }
 
-Value ClipExtras(const MotionClip& clip, const Skeleton& skeleton) {
+// `sparse_keys`: the clip's keys when they are not dense (KeysAreDense), else nullptr.
+Value ClipExtras(const MotionClip& clip, const std::vector<JointKeys>* sparse_keys, const Skeleton& skeleton) {
   Value::Object entry;
   entry["name"] = Value(clip.name);
   entry["sample_rate_hz"] = Value(clip.sample_rate_hz);
   entry["frames"] = Value(clip.num_frames);
-  if (!KeysAreDense(clip)) {
+  if (sparse_keys != nullptr) {
     Value::Object keys;
     for (int j = 0; j < clip.num_joints; ++j) {
-      const JointKeys& k = clip.keys[j];
+      const JointKeys& k = (*sparse_keys)[j];
       if (k.empty()) continue;
       Value::Object joint;
       if (!k.rotation_frames.empty()) joint["rotation"] = FrameRanges(k.rotation_frames);
@@ -182,7 +176,8 @@ Value ClipExtras(const MotionClip& clip, const Skeleton& skeleton) {
   return Value(std::move(entry));
 }
 
-Value ProvenanceExtras(const Scene& scene) {
+// `dense_keys`: every clip is known to be keyed at every frame (its keys are not read).
+Value ProvenanceExtras(const Scene& scene, bool dense_keys = false) {
   const SourceInfo& s = scene.source;
   Value::Object info;
   info["source_format"] = Value(s.format);
@@ -198,7 +193,8 @@ Value ProvenanceExtras(const Scene& scene) {
     info["source_frame_time_s"] = Value(s.source_frame_time_s);
   }
   Value::Array clips;
-  for (const MotionClip& clip : scene.clips) clips.push_back(ClipExtras(clip, scene.skeleton));
+  for (const MotionClip& clip : scene.clips)
+    clips.push_back(ClipExtras(clip, dense_keys || KeysAreDense(clip) ? nullptr : &clip.keys, scene.skeleton));
   info["clips"] = Value(std::move(clips));
   return Value(Value::Object{{"mocapfill", Value(std::move(info))}});
 }
@@ -209,6 +205,16 @@ Status CheckExportable(const Scene& scene) {
   return OkStatus();
 }
 
+void AddSceneAndAsset(const Scene& scene, std::vector<int> roots, bool dense_keys, tinygltf::Model& model) {
+  tinygltf::Scene gltf_scene;
+  gltf_scene.nodes = std::move(roots);
+  model.scenes.push_back(std::move(gltf_scene));
+  model.defaultScene = 0;
+  model.asset.generator = "mocapfill";
+  model.asset.version = "2.0";
+  model.asset.extras = ProvenanceExtras(scene, dense_keys);
+}
+
 // Everything but the buffer: nodes, meshes and skins, animations, scene, asset.
 Status BuildModel(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model) {
   RETURN_IF_ERROR(CheckExportable(scene));
@@ -217,13 +223,7 @@ Status BuildModel(const Scene& scene, BufferWriter& buffer, tinygltf::Model& mod
   RETURN_IF_ERROR(gltf_internal::ExportMeshes(scene, buffer, model, roots));
   for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(AddAnimation(clip, buffer, model));
 
-  tinygltf::Scene gltf_scene;
-  gltf_scene.nodes = roots;
-  model.scenes.push_back(std::move(gltf_scene));
-  model.defaultScene = 0;
-  model.asset.generator = "mocapfill";
-  model.asset.version = "2.0";
-  model.asset.extras = ProvenanceExtras(scene);
+  AddSceneAndAsset(scene, std::move(roots), false, model);
   return OkStatus();
 }
 
@@ -265,6 +265,44 @@ Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options) {
   file.bin = buffer.TakeBinaryChunk();  // padded to 4 bytes, so the chunk needs no padding
   ASSIGN_OR_RETURN(file.head, GlbHead(gltf_internal::GlbJson(model, file.bin.size()), file.bin.size()));
   return file;
+}
+
+namespace gltf_internal {
+
+Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene) {
+  tinygltf::Model model;
+  BufferWriter buffer(model);
+  RETURN_IF_ERROR(BuildModel(scene, buffer, model));
+  const size_t bin_bytes = buffer.TakeBinaryChunk().size();
+  return GlbJsonPair{SkeletonGlbJson(model, bin_bytes), TinygltfGlbJson(model, bin_bytes)};
+}
+
+}  // namespace gltf_internal
+
+Result<std::string> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout& layout, float first_time_s,
+                                          float last_time_s) {
+  if (scene.skeleton.num_joints() == 0) return InvalidArgument("nothing to export: the scene has no skeleton");
+  if (scene.clips.size() != 1 || !scene.meshes.empty() || !scene.skins.empty())
+    return InvalidArgument("packed tracks describe exactly one clip of a scene without meshes");
+  const MotionClip& clip = scene.clips[0];
+  const std::vector<int> moving = MovingJoints(clip.translation_animated);
+  if (static_cast<size_t>(clip.num_frames) != layout.frames || static_cast<size_t>(clip.num_joints) != layout.joints ||
+      static_cast<size_t>(scene.skeleton.num_joints()) != layout.joints || moving.size() != layout.moving ||
+      layout.frames == 0)
+    return InvalidArgument("packed tracks do not match the clip '" + clip.name + "'");
+  tinygltf::Model model;
+  BufferWriter buffer(model);
+  AddJointNodes(scene.skeleton, model);
+  const size_t n = layout.frames;
+  ClipViews views;
+  views.time = buffer.AddViewAt(0, n * sizeof(float));
+  views.rotation = buffer.AddViewAt(layout.RotationTrack(0) * sizeof(float), 4 * n * layout.joints * sizeof(float));
+  if (!moving.empty())
+    views.translation = buffer.AddViewAt(layout.TranslationTrack(0) * sizeof(float), 3 * n * moving.size() * sizeof(float));
+  AddAnimationChannels(clip.name, layout, moving, first_time_s, last_time_s, views, buffer, model);
+  AddSceneAndAsset(scene, scene.skeleton.Roots(), true, model);
+  const size_t bin_bytes = layout.TotalFloats() * sizeof(float);
+  return GlbHead(gltf_internal::GlbJson(model, bin_bytes), bin_bytes);
 }
 
 Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptions& options) {

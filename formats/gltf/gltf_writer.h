@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/gltf/gltf_tracks.h"
 #include "formats/motion_io.h"
 
 namespace mocapfill {
@@ -21,5 +22,14 @@ struct GlbFile {
   std::vector<unsigned char> bin;
 };
 Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options);
+
+// The head of a .glb (as in GlbFile) whose binary chunk is one clip's tracks, packed by the
+// caller as `layout` says (gltf_tracks.h): WriteGlb's head for the same scene and samples.
+// `scene` has a skeleton, no meshes or skins, and one clip whose name, rate, frame and joint
+// counts and translation_animated are set; its sample arrays and keys are not read (every
+// frame counts as keyed). `first_time_s` / `last_time_s` are the packed first and last frame
+// times (the time accessor's min and max).
+Result<std::string> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout& layout, float first_time_s,
+                                          float last_time_s);
 
 }  // namespace mocapfill

@@ -12,6 +12,11 @@ namespace mocapfill::gltf_internal {
 // are the same, but the binary chunk stays with the caller instead of being copied into the
 // model, then the JSON writer's copy, then a string stream and its string.
 std::string GlbJson(const tinygltf::Model& model, size_t bin_bytes) {
+  if (std::optional<std::string> json = SkeletonGlbJson(model, bin_bytes)) return std::move(*json);
+  return TinygltfGlbJson(model, bin_bytes);
+}
+
+std::string TinygltfGlbJson(const tinygltf::Model& model, size_t bin_bytes) {
   ::JsonDocument output;
   tinygltf::SerializeGltfModel(&model, output);
   if (bin_bytes > 0) {

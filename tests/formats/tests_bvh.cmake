@@ -9,5 +9,9 @@ mocapfill_add_test(bvh_tests
           ${CMAKE_CURRENT_LIST_DIR}/bvh_corpus_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_parallel_test.cc
   LIBS mocapfill_bvh)
+# The streaming BVH-to-.glb converter against the clip path, and the direct JSON writer.
+mocapfill_add_test(bvh_glb_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_test_support.cc ${CMAKE_CURRENT_LIST_DIR}/bvh_glb_test.cc
+  LIBS mocapfill_formats mocapfill_bvh_glb mocapfill_gltf)
 # Whole-file reads and LargeBuffer.
 mocapfill_add_test(file_io_tests SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc LIBS mocapfill_format_common)

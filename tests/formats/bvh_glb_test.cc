@@ -1,0 +1,236 @@
+// The streaming BVH-to-.glb converter (formats/bvh_glb) against the clip path (ReadBvh then
+// WriteGlb): the same bytes for every shipped fixture and every corpus clip, on one thread
+// and on two (including hemisphere flips at the split), and the clip path's behaviour
+// wherever the import is not a plain one. Also the direct JSON writer against tinygltf's.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "formats/bvh/bvh_motion_parallel.h"
+#include "formats/bvh/bvh_reader.h"
+#include "formats/bvh_glb/bvh_to_glb.h"
+#include "formats/file_io.h"
+#include "formats/gltf/gltf_export_internal.h"
+#include "formats/gltf/gltf_writer.h"
+#include "formats/motion_io.h"
+#include "tests/formats/bvh_test_support.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::FixturePath;
+using testing::ReadText;
+
+std::optional<std::string> Streamed(const std::string& text, const std::string& path, int threads,
+                                    ImportOptions options = {}) {
+  options.threads = threads;
+  std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text, path, options);
+  if (!glb) return std::nullopt;
+  return glb->head + std::string(glb->tracks.view());
+}
+
+Result<std::string> ThroughTheClip(const std::string& text, const std::string& path, ImportOptions options = {}) {
+  options.threads = 1;
+  ASSIGN_OR_RETURN(const Scene scene, ReadBvh(text, path, options));
+  ASSIGN_OR_RETURN(const GlbFile glb, WriteGlb(scene, {}));
+  return glb.head + std::string(reinterpret_cast<const char*>(glb.bin.data()), glb.bin.size());
+}
+
+std::vector<std::string> FixtureBvhFiles() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(FixturePath("bvh")))
+    if (entry.path().extension() == ".bvh") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Rows of `text` repeated until the motion section holds at least `min_bytes`, with the
+// Frames line rewritten to match.
+std::string Enlarge(const std::string& text, size_t min_bytes) {
+  const size_t rows_begin = text.find('\n', text.find("Frame Time")) + 1;
+  std::string rows = text.substr(rows_begin);
+  if (rows.back() != '\n') rows += '\n';
+  const int64_t per_copy = std::count(rows.begin(), rows.end(), '\n');
+  std::string motion;
+  int64_t frames = 0;
+  for (; motion.size() < min_bytes; frames += per_copy) motion += rows;
+  const size_t frames_line = text.find("Frames:");
+  const size_t frames_end = text.find('\n', frames_line);
+  return text.substr(0, frames_line) + "Frames: " + std::to_string(frames) + "\n" +
+         text.substr(frames_end + 1, rows_begin - frames_end - 1) + motion;
+}
+
+TEST(BvhGlbStream, EveryPlainFixtureGivesTheClipPathsBytes) {
+  int streamed = 0;
+  for (const std::string& path : FixtureBvhFiles()) {
+    const std::string text = ReadText(path);
+    const Result<std::string> expected = ThroughTheClip(text, path);
+    ASSERT_TRUE(expected.ok()) << path << ": " << expected.status().message();
+    const Result<Scene> scene = ReadBvh(text, path, {});
+    ASSERT_TRUE(scene.ok());
+    for (int threads : {1, 0}) {
+      const std::optional<std::string> got = Streamed(text, path, threads);
+      // Only an import with warnings (boxing_toes_short declares one frame too few) is left to the clip path.
+      ASSERT_EQ(got.has_value(), scene->warnings.empty()) << path;
+      if (!got) continue;
+      EXPECT_EQ(*got, *expected) << path << " threads " << threads;
+      ++streamed;
+    }
+  }
+  EXPECT_EQ(streamed, 2 * 7);
+}
+
+TEST(BvhGlbStream, TwoThreadsGiveTheSerialBytes) {
+  for (const char* name : {"cmu_01_01_short.bvh", "bandai_walk_normal_001_short.bvh", "cmu_mixed_orders.bvh",
+                           "cmu_two_roots.bvh", "cmu_crlf.bvh"}) {
+    const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + name)), 4 * bvh::kParallelMotionMinBytes);
+    const Result<std::string> expected = ThroughTheClip(text, "big.bvh");
+    ASSERT_TRUE(expected.ok()) << name;
+    const std::optional<std::string> serial = Streamed(text, "big.bvh", 1);
+    const std::optional<std::string> parallel = Streamed(text, "big.bvh", 0);
+    ASSERT_TRUE(serial && parallel) << name;
+    EXPECT_EQ(*serial, *expected) << name;
+    EXPECT_EQ(*parallel, *expected) << name;
+  }
+}
+
+// A joint turning between +170 and -170 degrees every frame: the composed quaternions lie
+// in opposite hemispheres from one frame to the next, so wherever the text is split, the
+// second thread's chains start on the wrong side for one of the two sign conventions
+// (rotation and packed value) and must be turned over at the join.
+TEST(BvhGlbStream, HemisphereFlipsAtTheSplitAreJoinedExactly) {
+  for (int extra_rows : {0, 1, 2, 3}) {
+    std::string rows;
+    int frames = 0;
+    for (; rows.size() < 4 * bvh::kParallelMotionMinBytes + static_cast<size_t>(extra_rows) * 40; ++frames)
+      rows += "1.5 90.25 -3.0 " + std::string(frames % 2 ? "170.0" : "-170.0") + " 10.0 " +
+              std::to_string(frames % 7) + " 179.5 -179.5 0.0\n";
+    const std::string text = "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition "
+                             "Zrotation Xrotation Yrotation\n  JOINT Spine\n  {\n    OFFSET 0 10 0\n    CHANNELS 3 "
+                             "Zrotation Xrotation Yrotation\n    End Site\n    {\n      OFFSET 0 10 0\n    }\n  }\n}\n"
+                             "MOTION\nFrames: " + std::to_string(frames) + "\nFrame Time: 0.0333333\n" + rows;
+    const Result<std::string> expected = ThroughTheClip(text, "flips.bvh");
+    ASSERT_TRUE(expected.ok()) << expected.status().message();
+    const std::optional<std::string> parallel = Streamed(text, "flips.bvh", 0);
+    ASSERT_TRUE(parallel.has_value());
+    EXPECT_EQ(*parallel, *expected) << "extra rows " << extra_rows;
+  }
+}
+
+// Whatever the clip path would warn about or reject, and Z-up sources, are left to it, so
+// that ConvertFile reports and writes exactly what ImportFile and ExportFile do.
+TEST(BvhGlbStream, AnythingButAPlainImportIsLeftToTheClipPath) {
+  const std::string path = FixturePath("bvh/cmu_01_01_short.bvh");
+  const std::string text = ReadText(path);
+  ImportOptions z_up;
+  z_up.up = "z";
+  EXPECT_FALSE(Streamed(text, path, 0, z_up).has_value());
+  ImportOptions bad_unit;
+  bad_unit.unit = "furlong";
+  EXPECT_FALSE(Streamed(text, path, 0, bad_unit).has_value());
+  EXPECT_FALSE(Streamed(ReadText(FixturePath("bvh/boxing_toes_short.bvh")), "toes.bvh", 0).has_value());
+  for (const char* bad : {"truncated.bvh", "nan_value.bvh", "inf_value.bvh", "wrong_channel_count.bvh",
+                          "unknown_channel.bvh", "zero_frames.bvh", "absurd_frames.bvh", "garbage.bvh",
+                          "missing_brace.bvh"}) {
+    const std::string bad_path = FixturePath(std::string("bad/") + bad);
+    EXPECT_FALSE(Streamed(ReadText(bad_path), bad_path, 0).has_value()) << bad;
+  }
+  // A declared frame count off by one either way.
+  const std::string more = Enlarge(text, 1000);
+  const size_t frames_at = more.find("Frames: ") + 8;
+  const int frames = std::stoi(more.substr(frames_at));
+  for (int delta : {-1, 1}) {
+    std::string off = more;
+    off.replace(frames_at, std::to_string(frames).size(), std::to_string(frames + delta));
+    EXPECT_FALSE(Streamed(off, path, 0).has_value()) << delta;
+  }
+
+  const std::string dir = testing::TestOutputDir("bvh_glb");
+  ImportOptions strict;
+  strict.strict = true;
+  const ConvertResult warned = ConvertFile(FixturePath("bvh/boxing_toes_short.bvh"), dir + "/toes.glb", {}, {});
+  ASSERT_TRUE(warned.status.ok());
+  ASSERT_EQ(warned.warnings.size(), 1u);
+  EXPECT_NE(warned.warnings[0].find("Frames declares 79 frames"), std::string::npos);
+  const ConvertResult refused = ConvertFile(FixturePath("bvh/boxing_toes_short.bvh"), dir + "/strict.glb", strict, {});
+  EXPECT_EQ(refused.status.code(), ErrorCode::kInvalidData);
+  EXPECT_FALSE(refused.failed_writing);
+  EXPECT_FALSE(fs::exists(dir + "/strict.glb"));
+  const ConvertResult turned = ConvertFile(path, dir + "/z_up.glb", z_up, {});
+  ASSERT_TRUE(turned.status.ok());
+  const Result<Scene> scene = ReadBvh(text, path, z_up);
+  ASSERT_TRUE(scene.ok());
+  const Result<GlbFile> glb = WriteGlb(*scene, {});
+  ASSERT_TRUE(glb.ok());
+  EXPECT_EQ(ReadText(dir + "/z_up.glb"),
+            glb->head + std::string(reinterpret_cast<const char*>(glb->bin.data()), glb->bin.size()));
+  const ConvertResult unwritable = ConvertFile(path, dir + "/no/such/folder/out.glb", {}, {});
+  EXPECT_EQ(unwritable.status.code(), ErrorCode::kIoError);
+  EXPECT_TRUE(unwritable.failed_writing);
+}
+
+TEST(BvhGlbStream, EveryCorpusClipGivesTheClipPathsBytes) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  std::vector<std::string> files = testing::CorpusFiles("bandai-namco-1/data", ".bvh");
+  for (const std::string& f : testing::CorpusFiles("cmu", ".bvh")) files.push_back(f);
+  for (const std::string& f : testing::CorpusFiles("assimp", ".bvh")) files.push_back(f);
+  ASSERT_GE(files.size(), 177u);
+  int streamed = 0;
+  const std::string dir = testing::ScratchDir("bvh_glb_corpus");
+  for (const std::string& path : files) {
+    const std::string text = ReadText(path);
+    const Result<std::string> expected = ThroughTheClip(text, path);
+    ASSERT_TRUE(expected.ok()) << path;
+    const std::optional<std::string> got = Streamed(text, path, 0);
+    if (got) {
+      EXPECT_EQ(*got, *expected) << path;
+      ++streamed;
+    }
+    const ConvertResult converted = ConvertFile(path, dir + "/out.glb", {}, {});
+    ASSERT_TRUE(converted.status.ok()) << path;
+    EXPECT_EQ(ReadText(dir + "/out.glb"), *expected) << path;
+  }
+  EXPECT_EQ(streamed, static_cast<int>(files.size()) - 1);  // Boxing_Toes.bvh warns (3,069 declared, 3,070 rows)
+}
+
+// The direct JSON writer (glb_json.cc) prints what tinygltf's serialiser prints, and leaves
+// models with meshes or skins to it.
+TEST(GlbJson, DirectWriterEqualsTinygltfsSerialiser) {
+  std::vector<std::string> sources = FixtureBvhFiles();
+  if (!testing::DataDir().empty()) {
+    for (const std::string& f : testing::CorpusFiles("bandai-namco-1/data", ".bvh")) sources.push_back(f);
+    for (const std::string& f : testing::CorpusFiles("cmu", ".bvh")) sources.push_back(f);
+  }
+  for (const std::string& path : sources) {
+    const Result<Scene> scene = ImportFile(path);
+    ASSERT_TRUE(scene.ok()) << path;
+    const Result<gltf_internal::GlbJsonPair> json = gltf_internal::GlbJsonBothWays(*scene);
+    ASSERT_TRUE(json.ok()) << path;
+    ASSERT_TRUE(json->direct.has_value()) << path;
+    EXPECT_EQ(*json->direct, json->tinygltf) << path;
+  }
+  // Sparse keys (a sketch), several clips with odd names, extras with empty arrays.
+  Result<Scene> sketch = ImportFile(FixturePath("sketches/walk_proud_002_legs8.glb"));
+  ASSERT_TRUE(sketch.ok());
+  sketch->clips.push_back(sketch->clips[0]);
+  sketch->clips[1].name = "quote \" backslash \\ tab \t é";
+  sketch->skeleton.mutable_joint(1).bvh_channels.clear();
+  const Result<gltf_internal::GlbJsonPair> json = gltf_internal::GlbJsonBothWays(*sketch);
+  ASSERT_TRUE(json.ok() && json->direct.has_value());
+  EXPECT_EQ(*json->direct, json->tinygltf);
+  EXPECT_NE(json->tinygltf.find("\"keys\""), std::string::npos);
+
+  const Result<Scene> skinned = ImportFile(FixturePath("gltf/simple_skin.gltf"));
+  ASSERT_TRUE(skinned.ok());
+  const Result<gltf_internal::GlbJsonPair> with_mesh = gltf_internal::GlbJsonBothWays(*skinned);
+  ASSERT_TRUE(with_mesh.ok());
+  EXPECT_FALSE(with_mesh->direct.has_value());
+}
+
+}  // namespace
+}  // namespace mocapfill
