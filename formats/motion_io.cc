@@ -22,6 +22,8 @@ bool IsAssimpExtension(const std::string& ext) {
 
 }  // namespace
 
+bool IsAssimpInput(const std::string& path) { return IsAssimpExtension(LowerExtension(path)); }
+
 bool IsImportExtension(const std::string& path) {
   const std::string ext = LowerExtension(path);
   return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || IsAssimpExtension(ext);

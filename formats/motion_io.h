@@ -60,6 +60,8 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
 
 // True when the extension is one ImportFile reads / ExportFile writes.
 bool IsImportExtension(const std::string& path);
+// True when ImportFile reads the file through Assimp (.fbx, .dae and the other Assimp formats).
+bool IsAssimpInput(const std::string& path);
 bool IsExportExtension(const std::string& path);
 
 }  // namespace mocapfill
