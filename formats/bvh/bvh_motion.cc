@@ -28,7 +28,7 @@ std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
       if (joint.layout.position_slot[i] >= 0) s.position_index[i] = joint.first_channel + joint.layout.position_slot[i];
     }
     s.num_rotations = joint.layout.num_rotations;
-    s.compose = ComposerFor(joint.layout.order);
+    s.compose = HalfAngleComposerFor(joint.layout.order);
     s.offset = joint.offset;
     samplers.push_back(s);
   }
@@ -142,6 +142,7 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   PrefaultForWrite(clip.translations.data(), clip.translations.capacity() * sizeof(Eigen::Vector3d));
 
   std::vector<double> row(channels);
+  rows::FrameComposer composer(samplers);
   int64_t frame = 0;
   while (true) {
     lexer.SkipWhitespace();  // line breaks and blank lines between rows
@@ -165,8 +166,8 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
     const size_t base = clip.rotations.size();
     clip.rotations.resize(base + joints);  // Eigen's constructors leave the new entries alone
     clip.translations.resize(base + joints);
-    rows::ComposeFrame(samplers, row.data(), base >= joints ? &clip.rotations[base - joints] : nullptr,
-                       &clip.rotations[base], &clip.translations[base]);
+    composer.Compose(row.data(), base >= joints ? &clip.rotations[base - joints] : nullptr, &clip.rotations[base],
+                     &clip.translations[base]);
     ++frame;
   }
   clip.num_frames = static_cast<int>(frame);

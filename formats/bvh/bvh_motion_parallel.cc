@@ -28,6 +28,7 @@ Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>
   PrefaultForWrite(clip.rotations.data() + first, count * sizeof(Eigen::Quaterniond));
   PrefaultForWrite(clip.translations.data() + first, count * sizeof(Eigen::Vector3d));
   std::vector<double> row(channels);
+  rows::FrameComposer composer(samplers);
   Chunk chunk;
   for (int64_t frame = first_frame;; ++frame) {
     while (p < end && IsBvhSpace(*p)) ++p;
@@ -38,7 +39,7 @@ Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>
     if (frame >= frame_limit || rows::ScanRow(p, end, row.data(), channels).kind != rows::RowEnd::kComplete)
       return chunk;
     Eigen::Quaterniond* rotations = clip.rotations.data() + frame * joints;
-    rows::ComposeFrame(samplers, row.data(), frame > first_frame ? rotations - joints : nullptr, rotations,
+    composer.Compose(row.data(), frame > first_frame ? rotations - joints : nullptr, rotations,
                        clip.translations.data() + frame * joints);
     ++chunk.rows;
   }

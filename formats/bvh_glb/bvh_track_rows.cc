@@ -29,7 +29,7 @@ struct Chunk {
 };
 
 // Parses the rows of [p, end) into frames first_frame, first_frame + 1, ... of the tracks,
-// never at or past frame_limit. Each frame is composed as ReadBvh composes it (ComposeFrame,
+// never at or past frame_limit. Each frame is composed as ReadBvh composes it (FrameComposer,
 // hemisphere-matched to the frame before within the chunk) and packed as WriteGlb packs it
 // (PackRotation, PackTranslation after scaling to metres).
 Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64_t first_frame, int64_t frame_limit) {
@@ -37,6 +37,7 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
   const size_t joints = samplers.size();
   const ClipTrackLayout& layout = target.layout;
   std::vector<double> row(target.channels);
+  bvh::rows::FrameComposer composer(samplers);
   std::vector<Eigen::Quaterniond> previous(joints), current(joints);
   std::vector<Eigen::Vector3d> translations(joints);
   Chunk chunk;
@@ -52,7 +53,7 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
     if (frame >= frame_limit || bvh::rows::ScanRow(p, end, row.data(), target.channels).kind != RowEnd::kComplete)
       return chunk;
     const bool first = frame == first_frame;
-    bvh::rows::ComposeFrame(samplers, row.data(), first ? nullptr : previous.data(), current.data(), translations.data());
+    composer.Compose(row.data(), first ? nullptr : previous.data(), current.data(), translations.data());
     if (first) chunk.first_rotation = current;
     for (size_t j = 0; j < joints; ++j)
       PackRotation(current[j], chunk.last_packed[j], target.tracks + layout.RotationTrack(j) + 4 * frame);
