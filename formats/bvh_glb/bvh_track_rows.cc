@@ -1,6 +1,8 @@
 #include "formats/bvh_glb/bvh_track_rows.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstring>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -73,12 +75,14 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
   }
 }
 
-// The second chunk started its hemisphere chains afresh. Frame by frame, the serial parse
-// would have turned its first rotation towards the first chunk's last one (sign1), and the
-// packing its normalised value towards the last packed one (sign2); every later frame of the
-// chunk follows, so the whole chunk differs from the serial result by sign1 * sign2 per
-// joint (negation is exact, so every later decision only changes sign).
-void JoinHemispheres(const TrackTarget& target, const Chunk& before, const Chunk& after, int64_t split_frame) {
+// A chunk started its hemisphere chains afresh. Frame by frame, the serial parse would have
+// turned its first rotation towards the chunk before's last one (sign1), and the packing
+// its normalised value towards the last packed one (sign2); every later frame of the chunk
+// follows, so the whole chunk differs from the serial result by sign1 * sign2 per joint
+// (negation is exact, so every later decision only changes sign). `before` holds the chunk
+// before's last values as they now stand; on return `after`'s last values do too.
+void JoinHemispheres(const TrackTarget& target, const Chunk& before, Chunk& after, int64_t first_frame,
+                     int64_t end_frame) {
   const ClipTrackLayout& layout = target.layout;
   for (size_t j = 0; j < layout.joints; ++j) {
     const Eigen::Quaterniond& q = after.first_rotation[j];
@@ -87,7 +91,9 @@ void JoinHemispheres(const TrackTarget& target, const Chunk& before, const Chunk
     const double sign2 = v.dot(before.last_packed[j]) < 0 ? -1.0 : 1.0;
     if (sign1 * sign2 > 0.0) continue;
     float* track = target.tracks + layout.RotationTrack(j);
-    for (size_t i = 4 * split_frame; i < 4 * layout.frames; ++i) track[i] = -track[i];
+    for (int64_t i = 4 * first_frame; i < 4 * end_frame; ++i) track[i] = -track[i];
+    after.last_rotation[j].coeffs() = -after.last_rotation[j].coeffs();
+    after.last_packed[j] = -after.last_packed[j];
   }
 }
 
@@ -106,32 +112,105 @@ bool PositionRange::Moves() const {
   return false;
 }
 
+namespace {
+
+// Rows are parsed in pieces of about this size, taken in turn by whichever thread is free:
+// the two vCPUs of a shared machine run at different speeds from moment to moment, and
+// halves finished up to 1.3 ms apart on a 6 ms CMU clip.
+constexpr size_t kPieceBytes = size_t{64} << 10;
+
+struct Piece {
+  const char* begin = nullptr;
+  const char* end = nullptr;
+  int64_t first_frame = 0;
+  int64_t rows = 0;
+  Chunk chunk;
+};
+
+// Pieces of [begin, end) that start at line starts.
+std::vector<Piece> SplitIntoPieces(const char* begin, const char* end) {
+  const size_t bytes = static_cast<size_t>(end - begin);
+  const size_t count = std::clamp<size_t>(bytes / kPieceBytes, 2, 256);
+  std::vector<Piece> pieces;
+  const char* start = begin;
+  for (size_t i = 1; i <= count && start < end; ++i) {
+    const char* stop = end;
+    if (i < count) {
+      const char* guess = begin + bytes * i / count;
+      if (guess < start) guess = start;
+      const void* line_break = std::memchr(guess, '\n', static_cast<size_t>(end - guess));
+      if (line_break != nullptr) stop = static_cast<const char*>(line_break) + 1;
+    }
+    Piece piece;
+    piece.begin = start;
+    piece.end = stop;
+    pieces.push_back(std::move(piece));
+    start = stop;
+  }
+  return pieces;
+}
+
+// Runs `work` on this thread and on `helper` (when it could be started) until `work`
+// returns false on both.
+template <class Work>
+void OnBothThreads(Work work, bool& helper_started) {
+  std::thread helper;
+  try {
+    helper = std::thread([&] { while (work()) {} });
+    helper_started = true;
+  } catch (const std::system_error&) {
+    helper_started = false;  // no thread to be had: this one does it all
+  }
+  while (work()) {}
+  if (helper.joinable()) helper.join();
+}
+
+}  // namespace
+
 bool PackRows(std::string_view rows_text, const TrackTarget& target, int threads, std::vector<PositionRange>& ranges) {
   const char* begin = rows_text.data();
   const char* end = begin + rows_text.size();
   const int64_t frames = static_cast<int64_t>(target.layout.frames);
-  std::optional<bvh::RowSplit> halves;
-  if (threads != 1 && rows_text.size() >= bvh::kParallelMotionMinBytes) halves = bvh::SplitRowsInHalf(rows_text);
-  if (!halves || halves->first_rows >= frames) {
+  if (threads == 1 || rows_text.size() < bvh::kParallelMotionMinBytes) {
     Chunk all = PackChunk(begin, end, target, 0, frames);
     ranges = std::move(all.ranges);
     return all.ok && all.rows == frames;
   }
-  Chunk second;
-  std::thread helper;
-  try {
-    helper = std::thread([&] { second = PackChunk(halves->split, end, target, halves->first_rows, frames); });
-  } catch (const std::system_error&) {
-    Chunk all = PackChunk(begin, end, target, 0, frames);  // no thread to be had
-    ranges = std::move(all.ranges);
-    return all.ok && all.rows == frames;
+  // First every piece's rows are counted, so that each knows its first frame; then the
+  // pieces are parsed. Both steps hand out pieces in order from one counter each.
+  std::vector<Piece> pieces = SplitIntoPieces(begin, end);
+  std::atomic<size_t> next_count{0}, next_parse{0}, counted{0};
+  bool helper_started = false;
+  OnBothThreads(
+      [&] {
+        if (const size_t i = next_count++; i < pieces.size()) {
+          pieces[i].rows = bvh::CountRows(pieces[i].begin, pieces[i].end);
+          ++counted;
+          return true;
+        }
+        while (counted.load() < pieces.size()) std::this_thread::yield();  // the other thread's last count
+        const size_t i = next_parse++;
+        if (i >= pieces.size()) return false;
+        int64_t first_frame = 0;
+        for (size_t k = 0; k < i; ++k) first_frame += pieces[k].rows;
+        Piece& piece = pieces[i];
+        piece.first_frame = first_frame;
+        piece.chunk = PackChunk(piece.begin, piece.end, target, first_frame, std::min(frames, first_frame + piece.rows));
+        return true;
+      },
+      helper_started);
+  int64_t total = 0;
+  for (const Piece& piece : pieces) {
+    if (!piece.chunk.ok || piece.chunk.rows != piece.rows) return false;
+    total += piece.rows;
   }
-  Chunk first = PackChunk(begin, halves->split, target, 0, halves->first_rows);
-  helper.join();
-  if (!first.ok || first.rows != halves->first_rows || !second.ok || first.rows + second.rows != frames) return false;
-  JoinHemispheres(target, first, second, halves->first_rows);
-  ranges = std::move(first.ranges);
-  MergeRanges(second.ranges, ranges);
+  if (total != frames) return false;
+  ranges = pieces[0].chunk.ranges;
+  for (size_t i = 1; i < pieces.size(); ++i) {
+    JoinHemispheres(target, pieces[i - 1].chunk, pieces[i].chunk, pieces[i].first_frame,
+                    pieces[i].first_frame + pieces[i].rows);
+    MergeRanges(pieces[i].chunk.ranges, ranges);
+  }
   return true;
 }
 
