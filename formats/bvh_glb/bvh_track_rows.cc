@@ -33,7 +33,7 @@ struct Chunk {
 // Parses the rows of [p, end) into frames first_frame, first_frame + 1, ... of the tracks,
 // never at or past frame_limit. Each frame is composed as ReadBvh composes it (FrameComposer,
 // hemisphere-matched to the frame before within the chunk) and packed as WriteGlb packs it
-// (PackRotation, PackTranslation after scaling to metres).
+// (PackRotations, PackTranslation after scaling to metres).
 Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64_t first_frame, int64_t frame_limit) {
   const std::vector<JointSampler>& samplers = *target.samplers;
   const size_t joints = samplers.size();
@@ -57,8 +57,8 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
     const bool first = frame == first_frame;
     composer.Compose(row.data(), first ? nullptr : previous.data(), current.data(), translations.data());
     if (first) chunk.first_rotation = current;
-    for (size_t j = 0; j < joints; ++j)
-      PackRotation(current[j], chunk.last_packed[j], target.tracks + layout.RotationTrack(j) + 4 * frame);
+    PackRotations(current.data(), joints, chunk.last_packed.data(), target.tracks + layout.RotationTrack(0) + 4 * frame,
+                  4 * layout.frames);
     for (size_t k = 0; k < target.position_joints.size(); ++k) {
       const Eigen::Vector3d t = translations[target.position_joints[k]] * target.metres_per_unit;
       PackTranslation(t, target.tracks + layout.TranslationTrack(k) + 3 * frame);

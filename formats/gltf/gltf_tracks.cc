@@ -1,5 +1,7 @@
 #include "formats/gltf/gltf_tracks.h"
 
+#include <immintrin.h>
+
 namespace mocapfill {
 
 Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_hz, float* times) {
@@ -10,6 +12,41 @@ Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_h
                          std::to_string(f) + " are equal in float32; the clip is too long for its frame rate");
   }
   return OkStatus();
+}
+
+namespace {
+
+// (a0 + a2) + (a1 + a3) in every lane.
+__attribute__((target("avx2"))) inline __m256d SumOfLanes(__m256d a) {
+  const __m256d pairs = _mm256_add_pd(a, _mm256_permute2f128_pd(a, a, 0x01));  // (a0 + a2, a1 + a3, ...)
+  return _mm256_add_pd(pairs, _mm256_permute_pd(pairs, 0x5));                   // + swapped within each half
+}
+
+__attribute__((target("avx2"))) void PackRotationsAvx2(const Eigen::Quaterniond* q, size_t count,
+                                                     Eigen::Vector4d* previous, float* out, size_t stride) {
+  for (size_t j = 0; j < count; ++j) {
+    __m256d v = _mm256_loadu_pd(q[j].coeffs().data());  // x, y, z, w
+    const __m256d n2 = SumOfLanes(_mm256_mul_pd(v, v));
+    if (_mm256_cvtsd_f64(n2) > 0.0) v = _mm256_div_pd(v, _mm256_sqrt_pd(n2));
+    const __m256d dot = SumOfLanes(_mm256_mul_pd(v, _mm256_loadu_pd(previous[j].data())));
+    if (_mm256_cvtsd_f64(dot) < 0) v = _mm256_xor_pd(v, _mm256_set1_pd(-0.0));  // negation, zeros included
+    _mm256_storeu_pd(previous[j].data(), v);
+    const __m256d rounded = _mm256_cvtps_pd(_mm256_cvtpd_ps(v));
+    const __m256d length = _mm256_sqrt_pd(SumOfLanes(_mm256_mul_pd(rounded, rounded)));
+    _mm_storeu_ps(out + j * stride, _mm256_cvtpd_ps(_mm256_div_pd(rounded, length)));
+  }
+}
+
+bool HasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+}
+
+}  // namespace
+
+void PackRotations(const Eigen::Quaterniond* q, size_t count, Eigen::Vector4d* previous, float* out, size_t stride) {
+  if (HasAvx2()) return PackRotationsAvx2(q, count, previous, out, stride);
+  for (size_t j = 0; j < count; ++j) PackRotation(q[j], previous[j], out + j * stride);
 }
 
 }  // namespace mocapfill

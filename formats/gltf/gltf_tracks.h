@@ -32,15 +32,34 @@ Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_h
 // One rotation as the track stores it: normalised, turned to the hemisphere of `previous`
 // (the joint's packed rotation one frame earlier, zero before the first frame; updated
 // here), rounded to float32 and normalised again in double, since the glTF validator
-// checks the length of the float32 values.
+// checks the length of the float32 values. The sums run in the order Eigen's SSE2 code
+// adds a Vector4d's terms, (x + z) + (y + w): these are its normalized() and dot() written
+// out, bit for bit, so that PackRotations can do the same four lanes at once.
 inline void PackRotation(const Eigen::Quaterniond& q, Eigen::Vector4d& previous, float* out) {
-  Eigen::Vector4d v = Eigen::Vector4d(q.x(), q.y(), q.z(), q.w()).normalized();
-  if (v.dot(previous) < 0) v = -v;
-  previous = v;
-  const Eigen::Vector4d rounded = v.cast<float>().cast<double>();
-  const Eigen::Vector4f unit = (rounded / rounded.norm()).cast<float>();
-  for (int c = 0; c < 4; ++c) out[c] = unit[c];
+  const auto sum = [](const double* a) { return (a[0] + a[2]) + (a[1] + a[3]); };
+  double v[4] = {q.x(), q.y(), q.z(), q.w()};
+  const double squares[4] = {v[0] * v[0], v[1] * v[1], v[2] * v[2], v[3] * v[3]};
+  const double n2 = sum(squares);
+  if (n2 > 0.0) {
+    const double n = std::sqrt(n2);
+    for (double& c : v) c /= n;
+  }
+  const double products[4] = {v[0] * previous[0], v[1] * previous[1], v[2] * previous[2], v[3] * previous[3]};
+  if (sum(products) < 0)
+    for (double& c : v) c = -c;
+  previous = Eigen::Vector4d(v[0], v[1], v[2], v[3]);
+  double rounded[4];
+  for (int c = 0; c < 4; ++c) rounded[c] = static_cast<float>(v[c]);
+  const double rounded_squares[4] = {rounded[0] * rounded[0], rounded[1] * rounded[1], rounded[2] * rounded[2],
+                                     rounded[3] * rounded[3]};
+  const double length = std::sqrt(sum(rounded_squares));
+  for (int c = 0; c < 4; ++c) out[c] = static_cast<float>(rounded[c] / length);
 }
+
+// PackRotation of `count` joints of one frame: q[j] with previous[j] into out + j * stride
+// (stride in floats: one track to the next). The same bits, four lanes at a time with AVX2
+// where the CPU has it.
+void PackRotations(const Eigen::Quaterniond* q, size_t count, Eigen::Vector4d* previous, float* out, size_t stride);
 
 // One translation (metres) as the track stores it.
 inline void PackTranslation(const Eigen::Vector3d& t, float* out) {

@@ -53,8 +53,7 @@ void AddJointNodes(const Skeleton& skeleton, tinygltf::Model& model) {
 void WriteRotations(const MotionClip& clip, float* out) {
   const size_t n = clip.num_frames, joints = clip.num_joints;
   std::vector<Eigen::Vector4d> previous(joints, Eigen::Vector4d::Zero());
-  for (size_t f = 0; f < n; ++f)
-    for (size_t j = 0; j < joints; ++j) PackRotation(clip.rotations[f * joints + j], previous[j], out + 4 * (j * n + f));
+  for (size_t f = 0; f < n; ++f) PackRotations(&clip.rotations[f * joints], joints, previous.data(), out + 4 * f, 4 * n);
 }
 
 // Translations of the `moving` joints as float32; the k-th joint's track starts at out + 3 k n.
