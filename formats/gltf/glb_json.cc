@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -20,8 +21,30 @@ namespace {
 
 using tinygltf::Value;
 
-void AppendDouble(double v, std::string& out) { out += nlohmann::json(v).dump(); }
-void AppendString(const std::string& s, std::string& out) { out += nlohmann::json(s).dump(); }
+// nlohmann's own formatting of a double (its serializer's dump_float): Grisu2 shortest
+// round-trip digits, "null" for NaN and infinities. Called directly, not through a json
+// value and a serializer (a locale lookup and allocations per number).
+void AppendDouble(double v, std::string& out) {
+  if (!std::isfinite(v)) {
+    out += "null";
+    return;
+  }
+  char digits[64];
+  const char* end = nlohmann::detail::to_chars(digits, digits + sizeof(digits), v);
+  out.append(digits, static_cast<size_t>(end - digits));
+}
+// Printable ASCII other than '"' and '\\' is written as it is, as nlohmann writes it; anything
+// else (escapes, UTF-8 to validate) goes through nlohmann.
+void AppendString(const std::string& s, std::string& out) {
+  for (const char c : s)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7F || c == '"' || c == '\\') {
+      out += nlohmann::json(s).dump();
+      return;
+    }
+  out += '"';
+  out += s;
+  out += '"';
+}
 // A string property: tinygltf passes these through c_str(), so the text ends at a NUL.
 void AppendProperty(const std::string& s, std::string& out) { AppendString(std::string(s.c_str()), out); }
 template <class Integer>
