@@ -35,6 +35,21 @@ std::vector<JointSampler> MakeSamplers(const ParsedHierarchy& hierarchy) {
   return samplers;
 }
 
+std::vector<ChannelGroup> MakeChannelGroups(const ParsedHierarchy& hierarchy) {
+  std::vector<ChannelGroup> groups;
+  for (const ParsedJoint& joint : hierarchy.joints) {
+    const std::vector<Channel>& channels = joint.layout.channels;
+    for (size_t i = 0; i < channels.size(); ++i) {
+      const int channel = joint.first_channel + static_cast<int>(i);
+      if (i > 0 && IsRotation(channels[i]) == IsRotation(channels[i - 1]))
+        ++groups.back().count;
+      else
+        groups.push_back({channel, 1});
+    }
+  }
+  return groups;
+}
+
 }  // namespace rows
 
 namespace {
@@ -124,10 +139,11 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
                        MotionClip& clip, int threads) {
   const int channels = hierarchy.num_channels;
   const std::vector<rows::JointSampler> samplers = rows::MakeSamplers(hierarchy);
+  const std::vector<rows::ChannelGroup> groups = rows::MakeChannelGroups(hierarchy);
   const size_t joints = samplers.size();
   clip.num_joints = static_cast<int>(joints);
   if (threads != 1 && lexer.remaining_bytes() >= kParallelMotionMinBytes) {
-    if (ParseMotionRowsInParallel(lexer.TextFromHere(), samplers, channels, header.declared_frames, clip))
+    if (ParseMotionRowsInParallel(lexer.TextFromHere(), samplers, groups, channels, header.declared_frames, clip))
       return OkStatus();
     clip.rotations.clear();
     clip.translations.clear();
@@ -143,6 +159,7 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
 
   std::vector<double> row(channels);
   rows::FrameComposer composer(samplers);
+  rows::RowScanner scanner(groups, channels);
   int64_t frame = 0;
   while (true) {
     lexer.SkipWhitespace();  // line breaks and blank lines between rows
@@ -151,7 +168,7 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
       return lexer.ErrorAt(lexer.Here(), "the motion is too large: more than " + std::to_string(frame) +
                                              " frames of " + std::to_string(joints) + " joints");
     const char* p = lexer.cursor();
-    const RowEnd end = rows::ScanRow(p, lexer.text_end(), row.data(), channels);
+    const RowEnd end = scanner.Scan(p, lexer.text_end(), row.data());
     lexer.MoveWithinLine(p);
     switch (end.kind) {
       case RowEnd::kComplete:

@@ -20,7 +20,8 @@ struct Chunk {
 // Parses the rows of [p, end) into frames first_frame, first_frame + 1, ... of `clip`,
 // never at or past frame_limit. The chunk's first frame is not matched to the hemisphere
 // of the frame before it (another thread may still be writing that one).
-Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>& samplers, int channels,
+Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>& samplers,
+                 const std::vector<rows::ChannelGroup>& groups, int channels,
                  int64_t first_frame, int64_t frame_limit, MotionClip& clip) {
   const size_t joints = samplers.size();
   // Each thread maps the pages it is about to fill, so the two share that work too.
@@ -29,6 +30,7 @@ Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>
   PrefaultForWrite(clip.translations.data() + first, count * sizeof(Eigen::Vector3d));
   std::vector<double> row(channels);
   rows::FrameComposer composer(samplers);
+  rows::RowScanner scanner(groups, channels);
   Chunk chunk;
   for (int64_t frame = first_frame;; ++frame) {
     while (p < end && IsBvhSpace(*p)) ++p;
@@ -36,7 +38,7 @@ Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>
       chunk.ok = true;
       return chunk;
     }
-    if (frame >= frame_limit || rows::ScanRow(p, end, row.data(), channels).kind != rows::RowEnd::kComplete)
+    if (frame >= frame_limit || scanner.Scan(p, end, row.data()).kind != rows::RowEnd::kComplete)
       return chunk;
     Eigen::Quaterniond* rotations = clip.rotations.data() + frame * joints;
     composer.Compose(row.data(), frame > first_frame ? rotations - joints : nullptr, rotations,
@@ -90,7 +92,8 @@ std::optional<RowSplit> SplitRowsInHalf(std::string_view rows_text) {
   return split;
 }
 
-bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<JointSampler>& samplers, int channels,
+bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<JointSampler>& samplers,
+                               const std::vector<rows::ChannelGroup>& groups, int channels,
                                int64_t declared_frames, MotionClip& clip) {
   const size_t joints = samplers.size();
   const char* begin = rows_text.data();
@@ -112,11 +115,11 @@ bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<Joi
   std::thread helper;
   try {
     helper = std::thread(
-        [&] { second = ParseChunk(split, end, samplers, channels, first_rows, declared_frames, clip); });
+        [&] { second = ParseChunk(split, end, samplers, groups, channels, first_rows, declared_frames, clip); });
   } catch (const std::system_error&) {
     return false;  // no thread to be had: the serial loop does it all
   }
-  const Chunk first = ParseChunk(begin, split, samplers, channels, 0, first_rows, clip);
+  const Chunk first = ParseChunk(begin, split, samplers, groups, channels, 0, first_rows, clip);
   helper.join();
   if (!first.ok || first.rows != first_rows || !second.ok) return false;
 

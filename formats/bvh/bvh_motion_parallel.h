@@ -35,6 +35,7 @@ std::optional<RowSplit> SplitRowsInHalf(std::string_view rows_text);
 // (rotations, translations, num_frames). Returns false, with the clip's arrays in an
 // unspecified state, when the serial loop must do it instead.
 bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<rows::JointSampler>& samplers,
-                               int channels, int64_t declared_frames, MotionClip& clip);
+                               const std::vector<rows::ChannelGroup>& groups, int channels, int64_t declared_frames,
+                               MotionClip& clip);
 
 }  // namespace mocapfill::bvh

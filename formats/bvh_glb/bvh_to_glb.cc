@@ -55,8 +55,10 @@ std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::stri
     return std::nullopt;
 
   const std::vector<bvh::rows::JointSampler> samplers = bvh::rows::MakeSamplers(*hierarchy);
+  const std::vector<bvh::rows::ChannelGroup> groups = bvh::rows::MakeChannelGroups(*hierarchy);
   TrackTarget target;
   target.samplers = &samplers;
+  target.groups = &groups;
   target.channels = hierarchy->num_channels;
   target.metres_per_unit = unit->scale_to_m;
   for (size_t j = 0; j < joints; ++j)

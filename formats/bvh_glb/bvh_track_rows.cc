@@ -40,6 +40,7 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
   const ClipTrackLayout& layout = target.layout;
   std::vector<double> row(target.channels);
   bvh::rows::FrameComposer composer(samplers);
+  bvh::rows::RowScanner scanner(*target.groups, target.channels);
   std::vector<Eigen::Quaterniond> previous(joints), current(joints);
   std::vector<Eigen::Vector3d> translations(joints);
   Chunk chunk;
@@ -52,7 +53,7 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
       chunk.last_rotation = std::move(previous);
       return chunk;
     }
-    if (frame >= frame_limit || bvh::rows::ScanRow(p, end, row.data(), target.channels).kind != RowEnd::kComplete)
+    if (frame >= frame_limit || scanner.Scan(p, end, row.data()).kind != RowEnd::kComplete)
       return chunk;
     const bool first = frame == first_frame;
     composer.Compose(row.data(), first ? nullptr : previous.data(), current.data(), translations.data());

@@ -20,6 +20,7 @@ namespace mocapfill::bvh_glb {
 // are parsed: slot k of the translation tracks holds joint position_joints[k].
 struct TrackTarget {
   const std::vector<bvh::rows::JointSampler>* samplers = nullptr;
+  const std::vector<bvh::rows::ChannelGroup>* groups = nullptr;
   int channels = 0;
   double metres_per_unit = 1.0;
   std::vector<int> position_joints;

@@ -287,5 +287,40 @@ TEST(BvhSyntax, FrameComposerEqualsComposingJointByJoint) {
   }
 }
 
+// RowScanner reuses a channel group's values when its text repeats the previous row's, and
+// must otherwise be ScanRow exactly: same values, same stops and positions, same errors.
+TEST(BvhSyntax, RowScannerIsScanRowRowAfterRow) {
+  const std::vector<bvh::rows::ChannelGroup> groups = {{0, 3}, {3, 3}, {6, 2}, {8, 1}};
+  const std::vector<std::string> rows = {
+      "1.5 2.5 3.5 10 20 30 0.0000 0.0000 7\n",
+      "1.5 2.5 3.5 11 20 30 0.0000 0.0000 7\n",     // first group repeats
+      "1.5 2.5 3.55 11 20 30 0.0000 0.0000 7\n",    // a token grows: not the same text
+      "1.5 2.5 3.55\t11 20 30 0.0000 0.0000 7\n",  // a tab where a space was: parsed again
+      "1.5 2.5 3.55 11 20 30 0.0000 0.0000 8\r\n",
+      "1.5 2.5 3.55 11 20 30 0.0000 0.0000 8 9\n",  // one value too many
+      "1.5 2.5 3.55 11 20 30 0.0000\n",             // ends inside a group
+      "1.5 2.5 3.55 11 20 nan 0.0000 0.0000 8\n",   // bad value after a repeated group
+      "1.5 2.5 3.55 11 20 30 0.0000 0.0000 8",       // no line break at the very end
+      "1.5 2.5 3.55 11 20 30 0.0000 0.0000 8\n",
+  };
+  std::vector<double> scanned(9, -1.0), reference(9, -1.0);
+  bvh::rows::RowScanner scanner(groups, 9);
+  std::vector<std::string> texts;  // all alive, as a file's rows are while they are scanned
+  texts.reserve(rows.size());
+  for (const std::string& row : rows) {
+    const std::string& text = texts.emplace_back(row + "     padding past the row");
+    const char* a = text.data();
+    const char* b = text.data();
+    const char* end = text.data() + row.size();
+    const bvh::rows::RowEnd x = scanner.Scan(a, end, scanned.data());
+    const bvh::rows::RowEnd y = bvh::rows::ScanRow(b, end, reference.data(), 9);
+    EXPECT_EQ(x.kind, y.kind) << row;
+    EXPECT_EQ(x.values, y.values) << row;
+    EXPECT_EQ(a, b) << row;
+    // Reused values are the ones the text gives (bitwise: a NaN is reported, then held).
+    EXPECT_EQ(std::memcmp(scanned.data(), reference.data(), 9 * sizeof(double)), 0) << row;
+  }
+}
+
 }  // namespace
 }  // namespace mocapfill
