@@ -1,5 +1,7 @@
 // mocapfill convert: any importable file to .gltf, .glb or .bvh; many files at once in
 // one process, spread over all cores.
+#include <malloc.h>
+
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
@@ -110,6 +112,13 @@ int RunConvert(const ConvertArgs& args) {
   // Files spread over the workers already keep the cores busy: each is read on one thread.
   ImportOptions import = args.import;
   if (workers > 1) import.threads = 1;
+  // Many files one after another: freed buffers stay with the process for the next file
+  // instead of going back to the kernel and being faulted in afresh (page faults for the
+  // 174 Bandai clips ~1,300 -> ~730).
+  if (jobs.size() > 1) {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  }
   Progress progress("converting", jobs.size());
   const InputSet inputs(args.inputs);
   std::atomic<size_t> next{0};

@@ -112,14 +112,18 @@ class RowScanner {
     size_t length = 0;
   };
 
+  // Whether a[0, n) == b[0, n), for a group's few dozen bytes: eight at a time, the last
+  // eight overlapping the ones before (no byte loop, no call).
   static bool SameText(const char* a, const char* b, size_t n) {
-    for (; n >= 8; a += 8, b += 8, n -= 8) {
-      uint64_t x, y;
-      std::memcpy(&x, a, 8);
-      std::memcpy(&y, b, 8);
-      if (x != y) return false;
-    }
-    return std::memcmp(a, b, n) == 0;
+    const auto load = [](const char* p) {
+      uint64_t v;
+      std::memcpy(&v, p, 8);
+      return v;
+    };
+    if (n < 8) return std::memcmp(a, b, n) == 0;
+    for (size_t i = 0; i + 8 < n; i += 8)
+      if (load(a + i) != load(b + i)) return false;
+    return load(a + n - 8) == load(b + n - 8);
   }
 
   const std::vector<ChannelGroup>& groups_;
