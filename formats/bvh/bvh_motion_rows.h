@@ -68,7 +68,10 @@ std::vector<ChannelGroup> MakeChannelGroups(const ParsedHierarchy& hierarchy);
 class RowScanner {
  public:
   RowScanner(const std::vector<ChannelGroup>& groups, int channels)
-      : groups_(groups), channels_(channels), previous_(groups.size()) {}
+      : groups_(groups), channels_(channels), previous_(groups.size()), reused_(groups.size(), 0) {}
+
+  // Whether group g of the row just scanned repeated the previous row's text.
+  bool Reused(size_t g) const { return reused_[g] != 0; }
 
   RowEnd Scan(const char*& p, const char* end, double* row) {
     for (size_t g = 0; g < groups_.size(); ++g) {
@@ -80,8 +83,10 @@ class RowScanner {
           SameText(p, previous.begin, previous.length) && IsBvhSpace(p[previous.length])) {
         previous.begin = p;
         p += previous.length;
+        reused_[g] = 1;
         continue;
       }
+      reused_[g] = 0;
       const char* begin = p;
       for (int c = group.first; c < group.first + group.count; ++c) {
         if (c > group.first) {
@@ -129,6 +134,7 @@ class RowScanner {
   const std::vector<ChannelGroup>& groups_;
   int channels_;
   std::vector<Text> previous_;
+  std::vector<uint8_t> reused_;
 };
 
 // One frame's local transforms into rotations[j] / translations[j], j < samplers.size().

@@ -30,6 +30,20 @@ void CompactTranslations(const ClipTrackLayout& parsed, const std::vector<bool>&
   }
 }
 
+// The channel group holding exactly the joint's position channels, or -1 (positions split
+// by rotations, or sharing a group with another joint's).
+int PositionGroup(const bvh::ParsedJoint& joint, const std::vector<bvh::rows::ChannelGroup>& groups) {
+  int first = -1, count = 0;
+  for (size_t i = 0; i < joint.layout.channels.size(); ++i) {
+    if (bvh::IsRotation(joint.layout.channels[i])) continue;
+    if (first < 0) first = joint.first_channel + static_cast<int>(i);
+    ++count;
+  }
+  for (size_t g = 0; g < groups.size(); ++g)
+    if (groups[g].first == first && groups[g].count == count) return static_cast<int>(g);
+  return -1;
+}
+
 }  // namespace
 
 std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path,
@@ -62,7 +76,10 @@ std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::stri
   target.channels = hierarchy->num_channels;
   target.metres_per_unit = unit->scale_to_m;
   for (size_t j = 0; j < joints; ++j)
-    if (bvh::HasPositionChannels(skeleton->joint(static_cast<int>(j)))) target.position_joints.push_back(static_cast<int>(j));
+    if (bvh::HasPositionChannels(skeleton->joint(static_cast<int>(j)))) {
+      target.position_joints.push_back(static_cast<int>(j));
+      target.position_groups.push_back(PositionGroup(hierarchy->joints[j], groups));
+    }
   target.layout = {static_cast<size_t>(frames), joints, target.position_joints.size()};
   StreamedGlb glb;
   try {

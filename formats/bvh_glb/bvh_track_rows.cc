@@ -61,8 +61,13 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
     PackRotations(current.data(), joints, chunk.last_packed.data(), target.tracks + layout.RotationTrack(0) + 4 * frame,
                   4 * layout.frames);
     for (size_t k = 0; k < target.position_joints.size(); ++k) {
+      float* packed = target.tracks + layout.TranslationTrack(k) + 3 * frame;
+      if (!first && target.position_groups[k] >= 0 && scanner.Reused(target.position_groups[k])) {
+        std::memcpy(packed, packed - 3, 3 * sizeof(float));  // the same text: the same value, range unchanged
+        continue;
+      }
       const Eigen::Vector3d t = translations[target.position_joints[k]] * target.metres_per_unit;
-      PackTranslation(t, target.tracks + layout.TranslationTrack(k) + 3 * frame);
+      PackTranslation(t, packed);
       PositionRange& range = chunk.ranges[k];
       if (first) {
         range.first = range.min = range.max = t;

@@ -24,6 +24,9 @@ struct TrackTarget {
   int channels = 0;
   double metres_per_unit = 1.0;
   std::vector<int> position_joints;
+  // Per position joint: the channel group holding all of its position channels (a frame whose
+  // text repeats it has the translation of the frame before), or -1.
+  std::vector<int> position_groups;
   ClipTrackLayout layout;  // frames: the declared frame count, which the rows must match
   float* tracks = nullptr;  // layout.TotalFloats() floats; the time track is left alone
 };
