@@ -1,18 +1,17 @@
 #include "formats/bvh/bvh_euler.h"
 
 #include <cmath>
-#include <cstdint>
 
 namespace mocapfill::bvh {
 
 namespace {
 
-[[gnu::always_inline]] inline void SinCosDegreesInline(double deg, double& sine, double& cosine) {
-  if (!(std::abs(deg) < 1e9)) {
-    sine = std::sin(deg * kRadPerDeg);
-    cosine = std::cos(deg * kRadPerDeg);
-    return;
-  }
+// sin and cos of deg, for |deg| < 1e9: reduced exactly by multiples of 90 degrees, Taylor
+// polynomials on [-45, 45] degrees, the quadrant picked with selects, which keeps it
+// branch-free and lets the compiler vectorise a loop of it (SinCosDegreesBatch). Larger
+// angles give something (their quadrant is taken as 0, so that no out-of-range conversion
+// happens) that callers replace with libm's value.
+[[gnu::always_inline]] inline void SinCosReduced(double deg, double& sine, double& cosine) {
   constexpr double kRoundingShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
   const double quarter_turns = (deg * (1.0 / 90.0) + kRoundingShift) - kRoundingShift;
   const double x = (deg - 90.0 * quarter_turns) * kRadPerDeg;  // deg - 90 k is exact
@@ -24,13 +23,20 @@ namespace {
   const double c =
       1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
           x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200 + x2 * (1.0 / 20922789888000))))))));
-  // Quarter turn q maps (s, c) to (s, c), (c, -s), (-s, -c), (-c, s); table lookups
-  // instead of a switch keep it branch-free.
-  static constexpr double kSign[2] = {1.0, -1.0};
-  const unsigned q = static_cast<unsigned>(static_cast<int64_t>(quarter_turns)) & 3u;
-  const double pair[2] = {s, c};
-  sine = pair[q & 1u] * kSign[q >> 1];
-  cosine = pair[(q & 1u) ^ 1u] * kSign[((q + 1u) >> 1) & 1u];
+  // Quarter turn q maps (s, c) to (s, c), (c, -s), (-s, -c), (-c, s).
+  const int q = static_cast<int>(std::abs(deg) < 1e9 ? quarter_turns : 0.0) & 3;
+  const bool odd = (q & 1) != 0, sine_negative = (q & 2) != 0, cosine_negative = ((q + 1) & 2) != 0;
+  sine = (odd ? c : s) * (sine_negative ? -1.0 : 1.0);
+  cosine = (odd ? s : c) * (cosine_negative ? -1.0 : 1.0);
+}
+
+[[gnu::always_inline]] inline void SinCosDegreesInline(double deg, double& sine, double& cosine) {
+  if (!(std::abs(deg) < 1e9)) {
+    sine = std::sin(deg * kRadPerDeg);
+    cosine = std::cos(deg * kRadPerDeg);
+    return;
+  }
+  SinCosReduced(deg, sine, cosine);
 }
 
 // q * (c + s e_A) = (w c - s v_A,  c v + w s e_A + s (v x e_A)), written out for axis A.
@@ -66,61 +72,41 @@ Eigen::Quaterniond Compose(const std::array<double, 3>& angles_deg) {
   return ComposeHalfAngles<A0, A1, A2>(s, c);
 }
 
-// The order's code, a0 * 9 + a1 * 3 + a2, for the switches below.
-int OrderCode(const EulerOrder& order) { return order.axes[0] * 9 + order.axes[1] * 3 + order.axes[2]; }
+struct OrderFunctions {
+  EulerComposer compose;
+  HalfAngleComposer compose_half_angles;
+};
+
+template <int A0, int A1, int A2>
+constexpr OrderFunctions kOrderFunctions{&Compose<A0, A1, A2>, &ComposeHalfAngles<A0, A1, A2>};
+
+// The composers of one of the six Tait-Bryan orders (EulerOrder guarantees three distinct axes).
+const OrderFunctions& FunctionsFor(const EulerOrder& order) {
+  switch (order.axes[0] * 9 + order.axes[1] * 3 + order.axes[2]) {
+    case 0 * 9 + 1 * 3 + 2: return kOrderFunctions<0, 1, 2>;
+    case 0 * 9 + 2 * 3 + 1: return kOrderFunctions<0, 2, 1>;
+    case 1 * 9 + 0 * 3 + 2: return kOrderFunctions<1, 0, 2>;
+    case 1 * 9 + 2 * 3 + 0: return kOrderFunctions<1, 2, 0>;
+    case 2 * 9 + 0 * 3 + 1: return kOrderFunctions<2, 0, 1>;
+    default: return kOrderFunctions<2, 1, 0>;
+  }
+}
 
 }  // namespace
 
 void SinCosDegrees(double deg, double& sine, double& cosine) { SinCosDegreesInline(deg, sine, cosine); }
 
-EulerComposer ComposerFor(const EulerOrder& order) {
-  switch (OrderCode(order)) {
-    case 0 * 9 + 1 * 3 + 2: return &Compose<0, 1, 2>;
-    case 0 * 9 + 2 * 3 + 1: return &Compose<0, 2, 1>;
-    case 1 * 9 + 0 * 3 + 2: return &Compose<1, 0, 2>;
-    case 1 * 9 + 2 * 3 + 0: return &Compose<1, 2, 0>;
-    case 2 * 9 + 0 * 3 + 1: return &Compose<2, 0, 1>;
-    default: return &Compose<2, 1, 0>;  // EulerOrder guarantees three distinct axes
-  }
-}
+EulerComposer ComposerFor(const EulerOrder& order) { return FunctionsFor(order).compose; }
 
-HalfAngleComposer HalfAngleComposerFor(const EulerOrder& order) {
-  switch (OrderCode(order)) {
-    case 0 * 9 + 1 * 3 + 2: return &ComposeHalfAngles<0, 1, 2>;
-    case 0 * 9 + 2 * 3 + 1: return &ComposeHalfAngles<0, 2, 1>;
-    case 1 * 9 + 0 * 3 + 2: return &ComposeHalfAngles<1, 0, 2>;
-    case 1 * 9 + 2 * 3 + 0: return &ComposeHalfAngles<1, 2, 0>;
-    case 2 * 9 + 0 * 3 + 1: return &ComposeHalfAngles<2, 0, 1>;
-    default: return &ComposeHalfAngles<2, 1, 0>;
-  }
-}
+HalfAngleComposer HalfAngleComposerFor(const EulerOrder& order) { return FunctionsFor(order).compose_half_angles; }
 
-// SinCosDegreesInline written so that the compiler vectorises it: the quadrant is picked
-// with selects instead of table lookups, and multiplying by +-1 and selecting give the same
-// bits as the lookups. Angles of 1e9 degrees and more take the libm path afterwards, one
-// by one, exactly as SinCosDegrees does (their quadrant is left at 0 here, so that no
-// out-of-range conversion happens). Built for AVX2 and for plain x86-64, picked at load time.
+// SinCosDegrees of every angle, vectorised: SinCosReduced for all, then libm's value for
+// the (rare) angles of 1e9 degrees and more, as SinCosDegrees gives them. Built for AVX2 and
+// for plain x86-64, picked at load time.
 __attribute__((target_clones("avx2", "default"))) void SinCosDegreesBatch(const double* __restrict deg, size_t n,
                                                                           double* __restrict sine,
                                                                           double* __restrict cosine) {
-  for (size_t i = 0; i < n; ++i) {
-    const double d = deg[i];
-    constexpr double kRoundingShift = 6755399441055744.0;  // 1.5 * 2^52, as in SinCosDegreesInline
-    const double quarter_turns = (d * (1.0 / 90.0) + kRoundingShift) - kRoundingShift;
-    const double x = (d - 90.0 * quarter_turns) * kRadPerDeg;
-    const double x2 = x * x;
-    const double s =
-        x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800 +
-            x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000))))))));
-    const double c =
-        1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-            x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200 + x2 * (1.0 / 20922789888000))))))));
-    const double turns = std::abs(d) < 1e9 ? quarter_turns : 0.0;
-    const int q = static_cast<int>(turns) & 3;
-    const bool odd = (q & 1) != 0, sine_negative = (q & 2) != 0, cosine_negative = ((q + 1) & 2) != 0;
-    sine[i] = (odd ? c : s) * (sine_negative ? -1.0 : 1.0);
-    cosine[i] = (odd ? s : c) * (cosine_negative ? -1.0 : 1.0);
-  }
+  for (size_t i = 0; i < n; ++i) SinCosReduced(deg[i], sine[i], cosine[i]);
   for (size_t i = 0; i < n; ++i)
     if (!(std::abs(deg[i]) < 1e9)) SinCosDegreesInline(deg[i], sine[i], cosine[i]);
 }
