@@ -156,16 +156,14 @@ std::vector<Piece> SplitIntoPieces(const char* begin, const char* end) {
   return pieces;
 }
 
-// Runs `work` on this thread and on `helper` (when it could be started) until `work`
-// returns false on both.
+// Runs `work` on this thread and on a helper thread until `work` returns false on both;
+// on this thread alone when no thread can be had.
 template <class Work>
-void OnBothThreads(Work work, bool& helper_started) {
+void OnBothThreads(Work work) {
   std::thread helper;
   try {
     helper = std::thread([&] { while (work()) {} });
-    helper_started = true;
   } catch (const std::system_error&) {
-    helper_started = false;  // no thread to be had: this one does it all
   }
   while (work()) {}
   if (helper.joinable()) helper.join();
@@ -186,7 +184,6 @@ bool PackRows(std::string_view rows_text, const TrackTarget& target, int threads
   // pieces are parsed. Both steps hand out pieces in order from one counter each.
   std::vector<Piece> pieces = SplitIntoPieces(begin, end);
   std::atomic<size_t> next_count{0}, next_parse{0}, counted{0};
-  bool helper_started = false;
   OnBothThreads(
       [&] {
         if (const size_t i = next_count++; i < pieces.size()) {
@@ -203,8 +200,7 @@ bool PackRows(std::string_view rows_text, const TrackTarget& target, int threads
         piece.first_frame = first_frame;
         piece.chunk = PackChunk(piece.begin, piece.end, target, first_frame, std::min(frames, first_frame + piece.rows));
         return true;
-      },
-      helper_started);
+      });
   int64_t total = 0;
   for (const Piece& piece : pieces) {
     if (!piece.chunk.ok || piece.chunk.rows != piece.rows) return false;
