@@ -42,8 +42,8 @@ inline RowEnd ScanRow(const char*& p, const char* end, double* row, int channels
   for (int c = 0; c < channels; ++c) {
     while (p < end && (*p == ' ' || *p == '\t')) ++p;
     if (p == end || *p == '\n' || *p == '\r') return {RowEnd::kShort, c};
-    const char* next = ParseNumber(p, end, row[c]);
-    if (next == nullptr || !IsFiniteNumber(row[c])) return {RowEnd::kBadValue, c};
+    const char* next = ParseFiniteNumber(p, end, row[c]);
+    if (next == nullptr) return {RowEnd::kBadValue, c};
     p = next;
   }
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
@@ -96,8 +96,8 @@ class RowScanner {
             return {RowEnd::kShort, c};
           }
         }
-        const char* next = ParseNumber(p, end, row[c]);
-        if (next == nullptr || !IsFiniteNumber(row[c])) {
+        const char* next = ParseFiniteNumber(p, end, row[c]);
+        if (next == nullptr) {
           previous.length = 0;
           return {RowEnd::kBadValue, c};
         }

@@ -161,7 +161,11 @@ TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
                                           "123456789012345678", "9007199254740993", "0.30000000000000004",
                                           "179.842245", "-0.000000", "1e5", "12345.678901234567890",
                                           "5.1072e-06", "-1.87007e-05", "1e22", "1e23", "1e-22", "1e-23",
-                                          "9007199254740993e-5", "2.5E+3", "1e00005"};
+                                          "9007199254740993e-5", "2.5E+3", "1e00005",
+                                          // 20 digits wrap a 64-bit mantissa (2^64 to 0): never the fast path
+                                          "18446744073709551616", "18446744073709551617.5", "12345678901234567890",
+                                          "0.00000000000000000001", "-1844674407370955161.7", "1234567890123456789",
+                                          "9007199254740992", "9007199254740992.0", "0.000000", "7.", "-0"};
   std::vector<std::string> samples = fixed;
   for (int n = 0; n < 200000; ++n) {
     const int integer_digits = static_cast<int>(rng() % 6);
@@ -194,6 +198,24 @@ TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
   for (const char* bad : {"-", "+", ".", "1.2.3", "--1", "+-1", "1e", "1e+", "e5", "abc", "1x"}) {
     const std::string s = bad;
     EXPECT_EQ(bvh::ParseNumber(s.data(), s.data() + s.size(), v), nullptr) << s;
+  }
+}
+
+// ParseFiniteNumber is ParseNumber that refuses NaN and infinities (from_chars's), and
+// nothing else.
+TEST(BvhSyntax, FiniteNumberParsingRefusesOnlyNanAndInfinity) {
+  for (const char* text : {"nan", "-nan", "inf", "-inf", "infinity", "1e400", "-1e309", "NaN"}) {
+    const std::string s = text;
+    double v = 0.0;
+    EXPECT_EQ(bvh::ParseFiniteNumber(s.data(), s.data() + s.size(), v), nullptr) << s;
+  }
+  for (const char* text : {"0", "-17.3198", "5.1072e-06", "1e308", "123456789012345678901234567890", "4.9e-324", "+2"}) {
+    const std::string s = std::string(text) + "\t";
+    double finite = -1.0, any = -2.0;
+    const char* end = bvh::ParseFiniteNumber(s.data(), s.data() + s.size(), finite);
+    ASSERT_EQ(end, bvh::ParseNumber(s.data(), s.data() + s.size(), any)) << s;
+    ASSERT_EQ(end, s.data() + s.size() - 1) << s;
+    EXPECT_EQ(finite, any) << s;
   }
 }
 
