@@ -14,6 +14,11 @@ namespace {
 
 constexpr size_t kHugePage = size_t{2} << 20;
 constexpr size_t kOwnMappingMinBytes = size_t{1} << 20;
+// A huge page is zeroed whole at its first touch (about 0.33 ms here), a small one costs
+// about 3.2 us with its fault: a last huge page holding less than this much of the buffer
+// is cheaper as small pages (a CMU clip's 2.07 MB text left 1.9 MiB of its second huge
+// page zeroed for nothing).
+constexpr size_t kHugeTailMinBytes = size_t{400} << 10;
 
 size_t RoundUp(size_t bytes, size_t to) { return (bytes + to - 1) / to * to; }
 
@@ -39,7 +44,16 @@ LargeBuffer::LargeBuffer(size_t bytes) : size_(bytes), capacity_(bytes) {
   mapping_bytes_ = span;
   capacity_ = span;
 #ifdef MADV_HUGEPAGE
-  ::madvise(mapping_, mapping_bytes_, MADV_HUGEPAGE);  // a hint: without huge pages, small ones serve
+  const size_t tail = bytes % kHugePage;
+  const size_t huge = tail >= kHugeTailMinBytes ? span : span - (tail > 0 ? kHugePage : 0);
+  if (huge > 0) ::madvise(mapping_, huge, MADV_HUGEPAGE);  // a hint: without huge pages, small ones serve
+  // The rest stays in small pages where THP is "madvise"; under "always" say so.
+  if (huge < span) ::madvise(static_cast<char*>(mapping_) + huge, span - huge, MADV_NOHUGEPAGE);
+#endif
+#ifdef MADV_POPULATE_WRITE
+  // The buffer is made to be filled: its small pages in one call rather than a fault each.
+  constexpr size_t kSmallPage = 4096;
+  if (huge < bytes) ::madvise(static_cast<char*>(mapping_) + huge, RoundUp(bytes - huge, kSmallPage), MADV_POPULATE_WRITE);
 #endif
   data_ = static_cast<unsigned char*>(mapping_);
 }

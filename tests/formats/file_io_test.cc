@@ -5,6 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -33,6 +36,66 @@ TEST(LargeBuffer, HoldsWhatIsWrittenBelowAndAboveItsOwnMappingSize) {
     std::memcpy(buffer.data(), pattern.data(), bytes);
     EXPECT_EQ(buffer.view(), pattern) << bytes;
   }
+}
+
+// The kernel's view of the mapping that holds `address` (/proc/self/smaps): its
+// "THPeligible" and "Rss" (kB) fields, or -1 each when not found.
+struct MappingInfo {
+  int thp_eligible = -1;
+  long rss_kb = -1;
+};
+MappingInfo MappingAt(const void* address) {
+  std::ifstream smaps("/proc/self/smaps");
+  const auto at = reinterpret_cast<uintptr_t>(address);
+  std::string line;
+  bool inside = false;
+  MappingInfo info;
+  while (std::getline(smaps, line)) {
+    unsigned long begin = 0, end = 0;
+    if (std::sscanf(line.c_str(), "%lx-%lx ", &begin, &end) == 2 && line.find(':') > line.find(' ')) {
+      if (inside) return info;
+      inside = at >= begin && at < end;
+    } else if (inside && line.rfind("THPeligible:", 0) == 0) {
+      info.thp_eligible = std::atoi(line.c_str() + 12);
+    } else if (inside && line.rfind("Rss:", 0) == 0) {
+      info.rss_kb = std::atol(line.c_str() + 4);
+    }
+  }
+  return info;
+}
+
+bool TransparentHugePagesOff() {
+  std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string text;
+  std::getline(mode, text);
+  return text.empty() || text.find("[never]") != std::string::npos;
+}
+
+// Whole 2 MiB pieces are huge-page eligible; a last piece the buffer fills less than
+// 400 KiB of is not (zeroing 2 MiB for it cost more than its small pages), and those
+// small pages are already there (faulted in one call).
+TEST(LargeBuffer, ShortTailStaysInSmallPagesAlreadyFaultedIn) {
+  constexpr size_t kMiB = size_t{1} << 20;
+  LargeBuffer short_tail(2 * kMiB + 100000);
+  LargeBuffer long_tail(2 * kMiB + 600000);
+  const std::string pattern = Pattern(2 * kMiB + 600000);
+  std::memcpy(short_tail.data(), pattern.data(), short_tail.size());
+  std::memcpy(long_tail.data(), pattern.data(), long_tail.size());
+  EXPECT_EQ(short_tail.view(), pattern.substr(0, short_tail.size()));
+  EXPECT_EQ(long_tail.view(), pattern);
+  if (TransparentHugePagesOff()) GTEST_SKIP() << "transparent huge pages are off here: no eligibility to check";
+  EXPECT_EQ(MappingAt(short_tail.data()).thp_eligible, 1);
+  EXPECT_EQ(MappingAt(short_tail.data() + 2 * kMiB).thp_eligible, 0);
+  EXPECT_EQ(MappingAt(long_tail.data()).thp_eligible, 1);
+  EXPECT_EQ(MappingAt(long_tail.data() + 2 * kMiB).thp_eligible, 1);
+}
+
+TEST(LargeBuffer, SmallPageTailIsFaultedInUpFront) {
+  constexpr size_t kMiB = size_t{1} << 20;
+  const LargeBuffer buffer(2 * kMiB + 100000);  // nothing written yet
+  const MappingInfo tail = MappingAt(buffer.data() + 2 * kMiB);
+  ASSERT_GE(tail.rss_kb, 0) << "no mapping found in /proc/self/smaps";
+  EXPECT_GE(tail.rss_kb, 100000 / 1024);
 }
 
 TEST(LargeBuffer, GrowingKeepsTheBytesAndMovingHandsThemOver) {
