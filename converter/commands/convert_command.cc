@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "converter/import_flags.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
+#include "formats/spread_thread.h"
 
 namespace mocapfill::cli {
 
@@ -128,13 +131,18 @@ int RunConvert(const ConvertArgs& args) {
       progress.Advance();
     }
   };
-  if (workers <= 1) {
+  // This thread is one of the workers; the others start on other CPUs (spread_thread.h).
+  {
+    std::vector<std::unique_ptr<SpreadThread>> helpers;
+    for (size_t t = 1; t < workers; ++t) {
+      try {
+        helpers.push_back(std::make_unique<SpreadThread>(work));
+      } catch (const std::system_error&) {
+        break;  // fewer threads than asked for: the ones there are take all the files
+      }
+    }
     work();
-  } else {
-    std::vector<std::thread> threads;
-    for (size_t t = 0; t < workers; ++t) threads.emplace_back(work);
-    for (std::thread& thread : threads) thread.join();
-  }
+  }  // joined
   for (int code : codes)
     if (code != kExitOk) return code;  // the first failure in input order decides
   return kExitOk;

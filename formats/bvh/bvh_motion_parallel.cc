@@ -1,10 +1,11 @@
 #include "formats/bvh/bvh_motion_parallel.h"
 
 #include "formats/file_io.h"
+#include "formats/spread_thread.h"
 
 #include <cstring>
+#include <optional>
 #include <system_error>
-#include <thread>
 
 namespace mocapfill::bvh {
 
@@ -112,15 +113,15 @@ bool ParseMotionRowsInParallel(std::string_view rows_text, const std::vector<Joi
   clip.translations.resize(declared_frames * joints);
 
   Chunk second;
-  std::thread helper;
+  std::optional<SpreadThread> helper;
   try {
-    helper = std::thread(
+    helper.emplace(
         [&] { second = ParseChunk(split, end, samplers, groups, channels, first_rows, declared_frames, clip); });
   } catch (const std::system_error&) {
     return false;  // no thread to be had: the serial loop does it all
   }
   const Chunk first = ParseChunk(begin, split, samplers, groups, channels, 0, first_rows, clip);
-  helper.join();
+  helper->Join();
   if (!first.ok || first.rows != first_rows || !second.ok) return false;
 
   const int64_t frames = first_rows + second.rows;

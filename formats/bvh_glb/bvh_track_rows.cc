@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <optional>
 #include <system_error>
 #include <thread>
 #include <utility>
 
 #include "formats/bvh/bvh_motion_parallel.h"
+#include "formats/spread_thread.h"
 
 namespace mocapfill::bvh_glb {
 
@@ -156,17 +158,17 @@ std::vector<Piece> SplitIntoPieces(const char* begin, const char* end) {
   return pieces;
 }
 
-// Runs `work` on this thread and on a helper thread until `work` returns false on both;
-// on this thread alone when no thread can be had.
+// Runs `work` on this thread and on a helper thread (on another CPU, spread_thread.h)
+// until `work` returns false on both; on this thread alone when no thread can be had.
 template <class Work>
 void OnBothThreads(Work work) {
-  std::thread helper;
+  std::optional<SpreadThread> helper;
   try {
-    helper = std::thread([&] { while (work()) {} });
+    helper.emplace([&] { while (work()) {} });
   } catch (const std::system_error&) {
   }
   while (work()) {}
-  if (helper.joinable()) helper.join();
+  if (helper) helper->Join();
 }
 
 }  // namespace

@@ -13,5 +13,7 @@ mocapfill_add_test(bvh_tests
 mocapfill_add_test(bvh_glb_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_test_support.cc ${CMAKE_CURRENT_LIST_DIR}/bvh_glb_test.cc
   LIBS mocapfill_formats mocapfill_bvh_glb mocapfill_gltf)
-# Whole-file reads and LargeBuffer.
-mocapfill_add_test(file_io_tests SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc LIBS mocapfill_format_common)
+# Whole-file reads, LargeBuffer and SpreadThread.
+mocapfill_add_test(file_io_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc ${CMAKE_CURRENT_LIST_DIR}/spread_thread_test.cc
+  LIBS mocapfill_format_common)
