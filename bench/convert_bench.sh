@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Conversion speed of mocapfill against Assimp's CLI, measured in the same run.
-#   bench/convert_bench.sh [build-dir] [data-dir]      (CONVERT_BENCH_RUNS=3: runs per case, best kept)
+#   bench/convert_bench.sh [build-dir] [data-dir]      (CONVERT_BENCH_RUNS=3: paired runs, best kept)
 # Prints, for the 174 Bandai-Namco clips (one process per file, and one batch process) and for
 # each CMU clip: seconds, MB/s, frames/s, and the speed-up over `assimp export IN OUT -f glb2`.
 set -euo pipefail
@@ -13,10 +13,8 @@ command -v assimp >/dev/null || { echo "error: assimp CLI missing (apt-get insta
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# bash's own clock: forking date(1) for every reading added about a millisecond to each
-# measured command, which weighed on the few-millisecond CMU conversions.
-now() { echo "$EPOCHREALTIME"; }
-elapsed() { echo "$2 - $1" | bc -l; }
+# bash's own clock ($EPOCHREALTIME): forking date(1) for every reading added about a
+# millisecond to each measured command, which weighed on the few-millisecond CMU conversions.
 frames_of() { awk '/^Frames:/ {s += $2} END {print s}' "$@"; }
 bytes_of() { cat "$@" | wc -c; }
 
@@ -24,40 +22,69 @@ bandai=("$data"/bandai-namco-1/data/*.bvh)
 mb=$(echo "$(bytes_of "${bandai[@]}") / 1000000" | bc -l)
 frames=$(frames_of "${bandai[@]}")
 
-# Best of N runs of a command string (seconds).
-best_of() {
-  local n=$1; shift
-  local best=999999
-  for ((i = 0; i < n; i++)); do
-    local t0=$(now); eval "$@" >/dev/null 2>&1; local t1=$(now)
-    best=$(echo "t=$(elapsed "$t0" "$t1"); if (t < $best) t else $best" | bc -l)
+# This shared machine's vCPUs change speed by up to 2x from one second to the next, so the
+# two tools take turns: Assimp then mocapfill on each file (or clip run). Two figures come
+# out: the best run of each side against the other's best, and the median over the pairs
+# of each pair's own ratio, which a slow stretch shifts for both sides at once. Measured one
+# side after the other, a ratio moved by a third between runs.
+tick() { t=$EPOCHREALTIME; }
+add() { echo "$1 + $2 - $3" | bc -l; }
+minimum() { printf "%s\n" "$@" | sort -g | head -1; }
+median() { printf "%s\n" "$@" | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+
+# One paired pass over the set, one process per file: sets pass_as, pass_mf (seconds).
+per_file_pass() {
+  pass_as=0; pass_mf=0
+  local f t0 t1 t2
+  for f in "${bandai[@]}"; do
+    tick; t0=$t; assimp export "$f" "$tmp/as.glb" -f glb2 >/dev/null 2>&1
+    tick; t1=$t; "$exe" convert "$f" "$tmp/mf.glb" >/dev/null 2>&1
+    tick; t2=$t
+    pass_as=$(add "$pass_as" "$t1" "$t0"); pass_mf=$(add "$pass_mf" "$t2" "$t1")
   done
-  echo "$best"
+}
+batch_once() {
+  local t0; tick; t0=$t; "$exe" convert "${bandai[@]}" -o "$tmp/batch" >/dev/null 2>&1; tick
+  echo "$t - $t0" | bc -l
 }
 
-per_file_mf() { for f in "${bandai[@]}"; do "$exe" convert "$f" "$tmp/mf.glb"; done; }
-per_file_as() { for f in "${bandai[@]}"; do assimp export "$f" "$tmp/as.glb" -f glb2; done; }
-batch_mf() { "$exe" convert "${bandai[@]}" -o "$tmp/batch"; }
-
-# Best of several runs on both sides: this shared machine's cores change speed by up to 2x
-# from one second to the next, and the best run of each is the one least disturbed.
 runs=${CONVERT_BENCH_RUNS:-3}
-t_as=$(best_of "$runs" per_file_as)
-t_mf=$(best_of "$runs" per_file_mf)
-t_batch=$(best_of $((2 * runs + 1)) batch_mf)
+as_runs=(); mf_runs=(); mf_pairs=(); batch_runs=(); batch_pairs=()
+for ((r = 0; r < runs; r++)); do
+  per_file_pass
+  as_runs+=("$pass_as"); mf_runs+=("$pass_mf"); mf_pairs+=("$(echo "$pass_as / $pass_mf" | bc -l)")
+  # Batch runs right after the pass whose Assimp time they are compared with.
+  for ((b = 0; b < 3; b++)); do
+    tb=$(batch_once); batch_runs+=("$tb"); batch_pairs+=("$(echo "$pass_as / $tb" | bc -l)")
+  done
+done
 
-printf "%-38s %9s %9s %11s %9s\n" "case" "seconds" "MB/s" "frames/s" "vs assimp"
-row() { printf "%-38s %9.3f %9.1f %11.0f %9s\n" "$1" "$2" "$(echo "$3 / $2" | bc -l)" "$(echo "$4 / $2" | bc -l)" "$5"; }
-row "bandai 174 clips, assimp per file" "$t_as" "$mb" "$frames" "1.0x"
-row "bandai 174 clips, mocapfill per file" "$t_mf" "$mb" "$frames" "$(printf '%.1fx' "$(echo "$t_as / $t_mf" | bc -l)")"
-row "bandai 174 clips, mocapfill batch" "$t_batch" "$mb" "$frames" "$(printf '%.1fx' "$(echo "$t_as / $t_batch" | bc -l)")"
+printf "%-38s %9s %9s %11s %10s %14s\n" "case" "seconds" "MB/s" "frames/s" "vs assimp" "paired median"
+row() {
+  printf "%-38s %9.3f %9.1f %11.0f %10s %14s\n" "$1" "$2" "$(echo "$3 / $2" | bc -l)" "$(echo "$4 / $2" | bc -l)" "$5" "$6"
+}
+times() { printf '%.1fx' "$1"; }
+t_as=$(minimum "${as_runs[@]}"); t_mf=$(minimum "${mf_runs[@]}"); t_batch=$(minimum "${batch_runs[@]}")
+row "bandai 174 clips, assimp per file" "$t_as" "$mb" "$frames" "1.0x" ""
+row "bandai 174 clips, mocapfill per file" "$t_mf" "$mb" "$frames" "$(times "$(echo "$t_as / $t_mf" | bc -l)")" \
+  "$(times "$(median "${mf_pairs[@]}")")"
+row "bandai 174 clips, mocapfill batch" "$t_batch" "$mb" "$frames" "$(times "$(echo "$t_as / $t_batch" | bc -l)")" \
+  "$(times "$(median "${batch_pairs[@]}")")"
 for clip in "$data"/cmu/*.bvh; do
   name=$(basename "$clip" .bvh)
   c_mb=$(echo "$(bytes_of "$clip") / 1000000" | bc -l)
   c_frames=$(frames_of "$clip")
-  c_as=$(best_of $((2 * runs - 1)) "assimp export '$clip' '$tmp/as.glb' -f glb2")
-  c_mf=$(best_of $((3 * runs)) "'$exe' convert '$clip' '$tmp/mf.glb'")
-  row "cmu $name, assimp" "$c_as" "$c_mb" "$c_frames" "1.0x"
-  row "cmu $name, mocapfill" "$c_mf" "$c_mb" "$c_frames" "$(printf '%.1fx' "$(echo "$c_as / $c_mf" | bc -l)")"
+  c_as=(); c_mf=(); c_pairs=()
+  for ((i = 0; i < 5 * runs; i++)); do
+    tick; t0=$t; assimp export "$clip" "$tmp/as.glb" -f glb2 >/dev/null 2>&1
+    tick; t1=$t; "$exe" convert "$clip" "$tmp/mf.glb" >/dev/null 2>&1
+    tick; t2=$t
+    c_as+=("$(echo "$t1 - $t0" | bc -l)"); c_mf+=("$(echo "$t2 - $t1" | bc -l)")
+    c_pairs+=("$(echo "($t1 - $t0) / ($t2 - $t1)" | bc -l)")
+  done
+  best_as=$(minimum "${c_as[@]}"); best_mf=$(minimum "${c_mf[@]}")
+  row "cmu $name, assimp" "$best_as" "$c_mb" "$c_frames" "1.0x" ""
+  row "cmu $name, mocapfill" "$best_mf" "$c_mb" "$c_frames" "$(times "$(echo "$best_as / $best_mf" | bc -l)")" \
+    "$(times "$(median "${c_pairs[@]}")")"
 done
 echo "targets: >= 5x per file over the whole set, >= 20x on each CMU clip, >= 50x in batch mode"
