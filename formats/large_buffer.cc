@@ -43,9 +43,10 @@ LargeBuffer::LargeBuffer(size_t bytes) : size_(bytes), capacity_(bytes) {
   mapping_ = reinterpret_cast<void*>(aligned);
   mapping_bytes_ = span;
   capacity_ = span;
-#ifdef MADV_HUGEPAGE
   const size_t tail = bytes % kHugePage;
   const size_t huge = tail >= kHugeTailMinBytes ? span : span - (tail > 0 ? kHugePage : 0);
+  (void)huge;  // unused where the kernel headers know neither advice
+#ifdef MADV_HUGEPAGE
   if (huge > 0) ::madvise(mapping_, huge, MADV_HUGEPAGE);  // a hint: without huge pages, small ones serve
   // The rest stays in small pages where THP is "madvise"; under "always" say so.
   if (huge < span) ::madvise(static_cast<char*>(mapping_) + huge, span - huge, MADV_NOHUGEPAGE);

@@ -10,7 +10,7 @@ namespace mocapfill {
 
 struct SpreadThread::State {
   std::function<void()> body;
-  cpu_set_t process_cpus;
+  cpu_set_t starter_cpus;
   bool restore = false;
   pthread_t thread{};
   bool joined = false;
@@ -18,7 +18,7 @@ struct SpreadThread::State {
 
 void* SpreadThread::Run(void* argument) {
   auto* state = static_cast<State*>(argument);
-  if (state->restore) pthread_setaffinity_np(pthread_self(), sizeof state->process_cpus, &state->process_cpus);
+  if (state->restore) pthread_setaffinity_np(pthread_self(), sizeof state->starter_cpus, &state->starter_cpus);
   state->body();
   return nullptr;
 }
@@ -26,10 +26,10 @@ void* SpreadThread::Run(void* argument) {
 SpreadThread::SpreadThread(std::function<void()> body) : state_(new State{std::move(body), {}, false, {}, false}) {
   pthread_attr_t attributes;
   pthread_attr_init(&attributes);
-  CPU_ZERO(&state_->process_cpus);
+  CPU_ZERO(&state_->starter_cpus);
   const int here = sched_getcpu();
-  if (here >= 0 && here < CPU_SETSIZE && sched_getaffinity(0, sizeof state_->process_cpus, &state_->process_cpus) == 0) {
-    cpu_set_t elsewhere = state_->process_cpus;
+  if (here >= 0 && here < CPU_SETSIZE && sched_getaffinity(0, sizeof state_->starter_cpus, &state_->starter_cpus) == 0) {
+    cpu_set_t elsewhere = state_->starter_cpus;
     CPU_CLR(here, &elsewhere);
     // Only one CPU to run on (taskset, a container's cpuset): nothing to spread over.
     if (CPU_COUNT(&elsewhere) > 0 && pthread_attr_setaffinity_np(&attributes, sizeof elsewhere, &elsewhere) == 0)
