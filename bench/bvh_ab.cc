@@ -5,15 +5,16 @@
 // drifts from second to second this is the only comparison that resolved a few per cent:
 // both sides see the same stretch of machine within milliseconds of each other.
 //   bvh_ab ROUNDS FILE...
-#include <time.h>
-
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "bench/thread_cpu_time.h"
 #include "formats/file_io.h"
 #include "formats/large_buffer.h"
 #include "formats/motion_io.h"
@@ -34,19 +35,15 @@ MOCAPFILL_DECLARE_STREAM(bvh_glb_x)
 
 namespace {
 
-double CpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using mocapfill::bench::ThreadCpuSeconds;
 
 // Converts `text` with one side; the .glb's size, or -1 when that side fell back (the
 // clip path would then be timed for neither).
 template <class Convert>
 long Time(Convert convert, double& seconds) {
-  const double t0 = CpuSeconds();
+  const double t0 = ThreadCpuSeconds();
   const auto glb = convert();
-  seconds += CpuSeconds() - t0;
+  seconds += ThreadCpuSeconds() - t0;
   return glb ? static_cast<long>(glb->head.size() + glb->tracks.size()) : -1;
 }
 

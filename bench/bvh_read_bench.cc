@@ -7,25 +7,16 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "bench/thread_cpu_time.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/file_io.h"
 
-namespace {
-
-// CPU time of this thread (s).
-double CpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-}  // namespace
+using mocapfill::bench::ThreadCpuSeconds;
 
 int main(int argc, char** argv) {
   if (argc < 3) {
@@ -44,7 +35,7 @@ int main(int argc, char** argv) {
   double best_ours = 1e30, best_assimp = 1e30;
   for (int round = 0; round < rounds; ++round) {
     frames = 0;
-    const double t0 = CpuSeconds();
+    const double t0 = ThreadCpuSeconds();
     for (const std::string& path : paths) {  // file read included, as in the CLI
       const auto text = mocapfill::ReadFileBytes(path);
       const auto scene = mocapfill::ReadBvh(*text, path, {});
@@ -54,7 +45,7 @@ int main(int argc, char** argv) {
       }
       frames += scene->clips[0].num_frames;
     }
-    const double t1 = CpuSeconds();
+    const double t1 = ThreadCpuSeconds();
     for (const std::string& path : paths) {
       Assimp::Importer importer;
       if (!importer.ReadFile(path, 0)) {
@@ -62,7 +53,7 @@ int main(int argc, char** argv) {
         return 1;
       }
     }
-    const double t2 = CpuSeconds();
+    const double t2 = ThreadCpuSeconds();
     best_ours = std::min(best_ours, t1 - t0);
     best_assimp = std::min(best_assimp, t2 - t1);
   }

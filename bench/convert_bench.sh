@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Conversion speed of mocapfill against Assimp's CLI, measured in the same run.
-#   bench/convert_bench.sh [build-dir] [data-dir]      (CONVERT_BENCH_RUNS=3: paired runs, best kept)
+#   bench/convert_bench.sh [build-dir] [data-dir]      (CONVERT_BENCH_RUNS=3: rounds of paired runs)
 # Prints, for the 174 Bandai-Namco clips (one process per file, and one batch process) and for
 # each CMU clip: seconds, MB/s, frames/s, and the speed-up over `assimp export IN OUT -f glb2`.
 set -euo pipefail
@@ -79,8 +79,8 @@ for clip in "$data"/cmu/*.bvh; do
     tick; t0=$t; assimp export "$clip" "$tmp/as.glb" -f glb2 >/dev/null 2>&1
     tick; t1=$t; "$exe" convert "$clip" "$tmp/mf.glb" >/dev/null 2>&1
     tick; t2=$t
-    c_as+=("$(echo "$t1 - $t0" | bc -l)"); c_mf+=("$(echo "$t2 - $t1" | bc -l)")
-    c_pairs+=("$(echo "($t1 - $t0) / ($t2 - $t1)" | bc -l)")
+    d_as=$(echo "$t1 - $t0" | bc -l); d_mf=$(echo "$t2 - $t1" | bc -l)
+    c_as+=("$d_as"); c_mf+=("$d_mf"); c_pairs+=("$(echo "$d_as / $d_mf" | bc -l)")
   done
   best_as=$(minimum "${c_as[@]}"); best_mf=$(minimum "${c_mf[@]}")
   row "cmu $name, assimp" "$best_as" "$c_mb" "$c_frames" "1.0x" ""
