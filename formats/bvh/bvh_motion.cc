@@ -158,7 +158,7 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   PrefaultForWrite(clip.translations.data(), clip.translations.capacity() * sizeof(Eigen::Vector3d));
 
   std::vector<double> row(channels);
-  rows::FrameComposer composer(samplers);
+  rows::FrameComposer composer(samplers, groups);
   rows::RowScanner scanner(groups, channels);
   int64_t frame = 0;
   while (true) {
@@ -183,7 +183,7 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
     const size_t base = clip.rotations.size();
     clip.rotations.resize(base + joints);  // Eigen's constructors leave the new entries alone
     clip.translations.resize(base + joints);
-    composer.Compose(row.data(), base >= joints ? &clip.rotations[base - joints] : nullptr, &clip.rotations[base],
+    composer.Compose(scanner, row.data(), base >= joints ? &clip.rotations[base - joints] : nullptr, &clip.rotations[base],
                      &clip.translations[base]);
     ++frame;
   }

@@ -30,7 +30,7 @@ Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>
   PrefaultForWrite(clip.rotations.data() + first, count * sizeof(Eigen::Quaterniond));
   PrefaultForWrite(clip.translations.data() + first, count * sizeof(Eigen::Vector3d));
   std::vector<double> row(channels);
-  rows::FrameComposer composer(samplers);
+  rows::FrameComposer composer(samplers, groups);
   rows::RowScanner scanner(groups, channels);
   Chunk chunk;
   for (int64_t frame = first_frame;; ++frame) {
@@ -42,7 +42,7 @@ Chunk ParseChunk(const char* p, const char* end, const std::vector<JointSampler>
     if (frame >= frame_limit || scanner.Scan(p, end, row.data()).kind != rows::RowEnd::kComplete)
       return chunk;
     Eigen::Quaterniond* rotations = clip.rotations.data() + frame * joints;
-    composer.Compose(row.data(), frame > first_frame ? rotations - joints : nullptr, rotations,
+    composer.Compose(scanner, row.data(), frame > first_frame ? rotations - joints : nullptr, rotations,
                        clip.translations.data() + frame * joints);
     ++chunk.rows;
   }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <vector>
 
 #include "formats/bvh/bvh_euler.h"
@@ -145,15 +146,32 @@ class RowScanner {
 // The sines and cosines of all of a row's half angles are taken in one vectorised call
 // (SinCosDegreesBatch), which gives each joint's EulerComposer result bit for bit in a third
 // of the time. One per thread: it keeps the row's angles between calls.
+//
+// A joint whose rotation text all repeats the previous row's (`scanner`, the RowScanner that
+// read `row`, says so), or that has no rotation channels, is not composed again: its
+// rotation is previous[j], which is what composing and the hemisphere flip would give bit for
+// bit (the same angles give the same q, and q turned towards +-q is that +-q). CMU's joints
+// that hold still are a sixth of its rotations. Joints whose angles are all zero skip the
+// trigonometry (they are the identity, as EulerComposer gives them).
 class FrameComposer {
  public:
-  explicit FrameComposer(const std::vector<JointSampler>& samplers);
-  void Compose(const double* row, const Eigen::Quaterniond* previous, Eigen::Quaterniond* rotations,
-               Eigen::Vector3d* translations);
+  FrameComposer(const std::vector<JointSampler>& samplers, const std::vector<ChannelGroup>& groups);
+  void Compose(const RowScanner& scanner, const double* row, const Eigen::Quaterniond* previous,
+               Eigen::Quaterniond* rotations, Eigen::Vector3d* translations);
+
+  // The joints of the last Compose whose rotation was composed (all of them when previous was
+  // nullptr) and those that kept previous[j], each in increasing order.
+  std::span<const uint32_t> composed() const { return {composed_.data(), composed_count_}; }
+  std::span<const uint32_t> kept() const { return {kept_.data(), kept_count_}; }
 
  private:
   const std::vector<JointSampler>& samplers_;
-  std::vector<double> half_angles_, sines_, cosines_;  // three per joint with rotation channels
+  std::vector<uint32_t> position_joints_;  // joints with position channels
+  // Joint j's rotation channels are in groups rotation_groups_[group_begin_[j], group_begin_[j + 1]).
+  std::vector<uint32_t> rotation_groups_, group_begin_;
+  std::vector<uint32_t> composed_, kept_, turning_;  // turning_: composed joints needing trigonometry
+  size_t composed_count_ = 0, kept_count_ = 0;
+  std::vector<double> half_angles_, sines_, cosines_;  // three per turning joint
 };
 
 }  // namespace mocapfill::bvh::rows

@@ -41,7 +41,7 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
   const size_t joints = samplers.size();
   const ClipTrackLayout& layout = target.layout;
   std::vector<double> row(target.channels);
-  bvh::rows::FrameComposer composer(samplers);
+  bvh::rows::FrameComposer composer(samplers, *target.groups);
   bvh::rows::RowScanner scanner(*target.groups, target.channels);
   std::vector<Eigen::Quaterniond> previous(joints), current(joints);
   std::vector<Eigen::Vector3d> translations(joints);
@@ -58,10 +58,16 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
     if (frame >= frame_limit || scanner.Scan(p, end, row.data()).kind != RowEnd::kComplete)
       return chunk;
     const bool first = frame == first_frame;
-    composer.Compose(row.data(), first ? nullptr : previous.data(), current.data(), translations.data());
+    composer.Compose(scanner, row.data(), first ? nullptr : previous.data(), current.data(), translations.data());
     if (first) chunk.first_rotation = current;
-    PackRotations(current.data(), joints, chunk.last_packed.data(), target.tracks + layout.RotationTrack(0) + 4 * frame,
-                  4 * layout.frames);
+    // A kept rotation is the one before, so it packs to the floats before (PackRotation of q
+    // towards its own packed +-q gives that packed value again).
+    float* rotation_floats = target.tracks + layout.RotationTrack(0) + 4 * frame;
+    const size_t track_stride = 4 * layout.frames;
+    PackListedRotations(current.data(), composer.composed().data(), composer.composed().size(), chunk.last_packed.data(),
+                        rotation_floats, track_stride);
+    for (const uint32_t j : composer.kept())
+      std::memcpy(rotation_floats + j * track_stride, rotation_floats + j * track_stride - 4, 4 * sizeof(float));
     for (size_t k = 0; k < target.position_joints.size(); ++k) {
       float* packed = target.tracks + layout.TranslationTrack(k) + 3 * frame;
       if (!first && target.position_groups[k] >= 0 && scanner.Reused(target.position_groups[k])) {

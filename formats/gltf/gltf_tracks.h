@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "processing/core/status.h"
@@ -60,6 +61,11 @@ inline void PackRotation(const Eigen::Quaterniond& q, Eigen::Vector4d& previous,
 // (stride in floats: one track to the next). The same bits, four lanes at a time with AVX2
 // where the CPU has it.
 void PackRotations(const Eigen::Quaterniond* q, size_t count, Eigen::Vector4d* previous, float* out, size_t stride);
+
+// PackRotations of the joints listed in joints[0, count) only, each j as above (q[j],
+// previous[j], out + j * stride); the others are left alone.
+void PackListedRotations(const Eigen::Quaterniond* q, const uint32_t* joints, size_t count, Eigen::Vector4d* previous,
+                         float* out, size_t stride);
 
 // One translation (metres) as the track stores it.
 inline void PackTranslation(const Eigen::Vector3d& t, float* out) {

@@ -3,6 +3,7 @@
 // snapping, and the exact fast paths (numbers, Euler angles) against their references.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <random>
@@ -273,40 +274,89 @@ TEST(BvhSyntax, SinCosBatchIsBitForBitTheScalarOne) {
   }
 }
 
-// A row composed by FrameComposer gives every joint exactly the EulerComposer rotation.
+// Rows composed by FrameComposer give every joint exactly the EulerComposer rotation turned
+// to the hemisphere of the frame before, whether it was composed or kept because its text
+// repeated (joints hold still on some frames, some rows are all zeros).
 TEST(BvhSyntax, FrameComposerEqualsComposingJointByJoint) {
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> angle(-720.0, 720.0);
   const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
   std::vector<bvh::rows::JointSampler> samplers;
+  std::vector<bvh::rows::ChannelGroup> groups;
   int channel = 0;
   for (int j = 0; j < 18; ++j) {
     bvh::rows::JointSampler s;
     const EulerOrder order = *EulerOrder::Parse(orders[j % 6]);
     s.compose = bvh::HalfAngleComposerFor(order);
     s.num_rotations = j % 9 == 8 ? 0 : (j % 4 == 3 ? 2 : 3);  // joints without, and with two, rotation channels
-    for (int i = 0; i < s.num_rotations; ++i) s.rotation_index[i] = channel++;
+    if (j % 5 == 1) {  // rotation channels split into two groups by a position channel between them
+      s.rotation_index[0] = channel;
+      s.position_index[1] = channel + 1;
+      for (int i = 1; i < s.num_rotations; ++i) s.rotation_index[i] = channel + 1 + i;
+      groups.push_back({channel, 1});
+      groups.push_back({channel + 1, 1});
+      groups.push_back({channel + 2, s.num_rotations - 1});
+      channel += s.num_rotations + 1;
+    } else {
+      for (int i = 0; i < s.num_rotations; ++i) s.rotation_index[i] = channel + i;
+      if (s.num_rotations > 0) groups.push_back({channel, s.num_rotations});
+      channel += s.num_rotations;
+    }
     samplers.push_back(s);
   }
-  bvh::rows::FrameComposer composer(samplers);
-  std::vector<Eigen::Quaterniond> rotations(samplers.size());
-  std::vector<Eigen::Vector3d> translations(samplers.size());
+  bvh::rows::FrameComposer composer(samplers, groups);
+  bvh::rows::RowScanner scanner(groups, channel);
+  const size_t joints = samplers.size();
+  std::vector<Eigen::Quaterniond> rotations(3000 * joints);
+  std::vector<Eigen::Vector3d> translations(joints);
+  std::vector<std::string> texts;  // every row's text stays in place, as a file's does
+  texts.reserve(3000);
+  std::vector<double> values(channel), row(channel);
+  size_t kept = 0;
   for (int frame = 0; frame < 3000; ++frame) {
-    std::vector<double> row(channel);
-    for (double& v : row) v = frame % 5 == 0 ? 0.0 : angle(rng);
-    if (frame % 7 == 0) row[frame % channel] = -0.0;
-    composer.Compose(row.data(), nullptr, rotations.data(), translations.data());
-    for (size_t j = 0; j < samplers.size(); ++j) {
+    for (int c = 0; c < channel; ++c)
+      if (frame == 0 || (frame + c / 4) % 3 != 0) values[c] = frame % 5 == 0 ? 0.0 : angle(rng);  // a third hold
+    if (frame % 7 == 0) values[frame % channel] = -0.0;
+    std::string text;
+    for (int c = 0; c < channel; ++c) {
+      char number[32];
+      const auto end = std::to_chars(number, number + sizeof number, values[c]).ptr;
+      text.append(number, end).push_back(c + 1 < channel ? ' ' : '\n');
+    }
+    texts.push_back(std::move(text));
+    const char* p = texts.back().data();
+    ASSERT_EQ(scanner.Scan(p, p + texts.back().size(), row.data()).kind, bvh::rows::RowEnd::kComplete);
+    Eigen::Quaterniond* now = &rotations[frame * joints];
+    const Eigen::Quaterniond* before = frame > 0 ? now - joints : nullptr;
+    composer.Compose(scanner, row.data(), before, now, translations.data());
+    for (size_t j = 0; j < joints; ++j) {
       const bvh::rows::JointSampler& s = samplers[j];
       std::array<double, 3> a{0.0, 0.0, 0.0};
       for (int i = 0; i < 3; ++i)
-        if (s.rotation_index[i] >= 0) a[i] = row[s.rotation_index[i]];
-      const Eigen::Quaterniond expected = s.num_rotations == 0 ? Eigen::Quaterniond::Identity()
-                                                               : bvh::ComposeEulerDegrees(a, *EulerOrder::Parse(orders[j % 6]));
-      ASSERT_EQ(std::memcmp(rotations[j].coeffs().data(), expected.coeffs().data(), 4 * sizeof(double)), 0)
+        if (s.rotation_index[i] >= 0) a[i] = values[s.rotation_index[i]];
+      Eigen::Quaterniond expected = s.num_rotations == 0 ? Eigen::Quaterniond::Identity()
+                                                         : bvh::ComposeEulerDegrees(a, *EulerOrder::Parse(orders[j % 6]));
+      if (before != nullptr && expected.coeffs().dot(before[j].coeffs()) < 0.0) expected.coeffs() = -expected.coeffs();
+      ASSERT_EQ(std::memcmp(now[j].coeffs().data(), expected.coeffs().data(), 4 * sizeof(double)), 0)
           << "frame " << frame << " joint " << j;
+      if (s.position_index[1] >= 0) {
+        ASSERT_EQ(translations[j].y(), values[s.position_index[1]]);
+      }
     }
+    // composed() and kept() list every joint once between them, each in order.
+    std::vector<uint32_t> listed(composer.composed().begin(), composer.composed().end());
+    listed.insert(listed.end(), composer.kept().begin(), composer.kept().end());
+    ASSERT_TRUE(std::is_sorted(composer.composed().begin(), composer.composed().end()));
+    ASSERT_TRUE(std::is_sorted(composer.kept().begin(), composer.kept().end()));
+    std::sort(listed.begin(), listed.end());
+    ASSERT_EQ(listed.size(), joints);
+    for (size_t j = 0; j < joints; ++j) ASSERT_EQ(listed[j], j);
+    if (frame == 0) {
+      ASSERT_TRUE(composer.kept().empty());
+    }
+    kept += composer.kept().size();
   }
+  EXPECT_GT(kept, 3000u * joints / 5);  // the kept path was taken, and often
 }
 
 // RowScanner reuses a channel group's values when its text repeats the previous row's, and

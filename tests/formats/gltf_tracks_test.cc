@@ -63,7 +63,31 @@ TEST(GltfTracks, PackRotationsIsPackRotationJointByJoint) {
       for (size_t j = 0; j < joints; ++j) PackRotation(q[f * joints + j], previous_single[j], single.data() + j * stride + 4 * f);
     }
     EXPECT_EQ(std::memcmp(batch.data(), single.data(), batch.size() * sizeof(float)), 0) << joints;
+    EXPECT_EQ(std::memcmp(previous_batch.data(), previous_single.data(), joints * sizeof(Eigen::Vector4d)), 0) << joints;
   }
+}
+
+// PackListedRotations packs exactly the listed joints, as PackRotation would, and leaves the
+// others' floats and previous values alone; zero quaternions are among the packed ones.
+TEST(GltfTracks, PackListedRotationsPacksOnlyTheListedJoints) {
+  std::vector<Eigen::Quaterniond> q = Samples();
+  const size_t joints = 31, frames = q.size() / joints, stride = 4 * frames;
+  for (size_t f = 0; f < frames; f += 7) q[f * joints + f % joints].coeffs().setZero();
+  std::vector<float> listed(stride * joints, -7.0f), single(stride * joints, -7.0f);
+  std::vector<Eigen::Vector4d> previous_listed(joints, Eigen::Vector4d::Zero()), previous_single = previous_listed;
+  std::mt19937 rng(5);
+  size_t packed = 0;
+  for (size_t f = 0; f < frames; ++f) {
+    std::vector<uint32_t> list;
+    for (uint32_t j = 0; j < joints; ++j)
+      if (f == 0 || rng() % 4 != 0) list.push_back(j);  // a quarter of the joints left out
+    PackListedRotations(&q[f * joints], list.data(), list.size(), previous_listed.data(), listed.data() + 4 * f, stride);
+    for (const uint32_t j : list) PackRotation(q[f * joints + j], previous_single[j], single.data() + j * stride + 4 * f);
+    packed += list.size();
+  }
+  EXPECT_LT(packed, joints * frames * 9 / 10);
+  EXPECT_EQ(std::memcmp(listed.data(), single.data(), listed.size() * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(previous_listed.data(), previous_single.data(), joints * sizeof(Eigen::Vector4d)), 0);
 }
 
 }  // namespace
