@@ -178,27 +178,38 @@ TEST(BvhSyntax, PlainDecimalFastPathEqualsFromChars) {
     if (n % 4 == 0) s += (rng() % 2 ? "e-" : "E") + std::to_string(rng() % 30);  // "5.1072e-06" style
     samples.push_back(s);
   }
+  // Each value at the end of the text and with a long row after it: digits, points and
+  // signs after the blank must change nothing.
+  const std::string after = "\n12345678.9012345678e-5-.9 1.5";
   int fast = 0;
   for (const std::string& s : samples) {
-    const std::string padded = s + " 7";  // the parser must stop at the blank
-    double expected = 0.0, got = -1.0;
-    const char* begin = s.data() + (s[0] == '+' ? 1 : 0);
-    const auto ref = std::from_chars(begin, s.data() + s.size(), expected);
-    const char* end = bvh::ParseNumber(padded.data(), padded.data() + padded.size(), got);
-    if (ref.ec != std::errc() || ref.ptr != s.data() + s.size()) {
-      EXPECT_EQ(end, nullptr) << s;
-      continue;
+    for (const std::string& padded : {s + " 7", s + " " + after, s + "\t" + after, s + "\r" + after}) {
+      double expected = 0.0, got = -1.0;
+      const char* begin = s.data() + (s[0] == '+' ? 1 : 0);
+      const auto ref = std::from_chars(begin, s.data() + s.size(), expected);
+      const char* end = bvh::ParseNumber(padded.data(), padded.data() + padded.size(), got);
+      if (ref.ec != std::errc() || ref.ptr != s.data() + s.size()) {
+        EXPECT_EQ(end, nullptr) << s;
+        continue;
+      }
+      ASSERT_EQ(end, padded.data() + s.size()) << s;
+      EXPECT_EQ(got, expected) << s;
+      EXPECT_EQ(std::signbit(got), std::signbit(expected)) << s;
+      if (bvh::ParsePlainDecimal(padded.data(), padded.data() + padded.size(), got)) ++fast;
     }
-    ASSERT_EQ(end, padded.data() + s.size()) << s;
-    EXPECT_EQ(got, expected) << s;
-    EXPECT_EQ(std::signbit(got), std::signbit(expected)) << s;
-    if (bvh::ParsePlainDecimal(padded.data(), padded.data() + padded.size(), got)) ++fast;
   }
-  EXPECT_GT(fast, 150000);  // the fast path, not from_chars, handled the typical values
+  EXPECT_GT(fast, 600000);  // the fast path, not from_chars, handled the typical values
   double v = 0.0;
-  for (const char* bad : {"-", "+", ".", "1.2.3", "--1", "+-1", "1e", "1e+", "e5", "abc", "1x"}) {
-    const std::string s = bad;
-    EXPECT_EQ(bvh::ParseNumber(s.data(), s.data() + s.size(), v), nullptr) << s;
+  for (const char* bad : {"-", "+", ".", "1.2.3", "--1", "+-1", "1e", "1e+", "e5", "abc", "1x", "-.", "+.e5", "1.-2",
+                          "12345678.1x", "1.23456789012345678901234567890x", "0..5", ".e1", "123456789."}) {
+    for (const std::string& s : {std::string(bad), std::string(bad) + " " + after}) {
+      const bool valid = std::string_view(bad) == "123456789.";  // the one good one: a long value
+      const char* end = bvh::ParseNumber(s.data(), s.data() + s.size(), v);
+      EXPECT_EQ(end != nullptr, valid) << s;
+      if (valid) {
+        EXPECT_EQ(v, 123456789.0);
+      }
+    }
   }
 }
 
