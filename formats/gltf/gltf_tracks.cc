@@ -27,17 +27,15 @@ __attribute__((target("avx2"))) inline void PackOneAvx2(const Eigen::Quaterniond
                                                       float* out) {
   __m256d v = _mm256_loadu_pd(q.coeffs().data());  // x, y, z, w
   const __m256d n2 = SumOfLanes(_mm256_mul_pd(v, v));
-  if (_mm256_cvtsd_f64(n2) > 0.0) v = _mm256_div_pd(v, _mm256_sqrt_pd(n2));
+  if (const double length2 = _mm256_cvtsd_f64(n2); length2 > 0.0 && std::abs(length2 - 1.0) > kUnitTolerance)
+    v = _mm256_div_pd(v, _mm256_sqrt_pd(n2));
   const __m256d dot = SumOfLanes(_mm256_mul_pd(v, _mm256_loadu_pd(previous.data())));
   if (_mm256_cvtsd_f64(dot) < 0) v = _mm256_xor_pd(v, _mm256_set1_pd(-0.0));  // negation, zeros included
   _mm256_storeu_pd(previous.data(), v);
-  const __m256d rounded = _mm256_cvtps_pd(_mm256_cvtpd_ps(v));
-  const __m256d length = _mm256_sqrt_pd(SumOfLanes(_mm256_mul_pd(rounded, rounded)));
-  _mm_storeu_ps(out, _mm256_cvtpd_ps(_mm256_div_pd(rounded, length)));
+  _mm_storeu_ps(out, _mm256_cvtpd_ps(v));
 }
 
-// Joint i of the loop is joint_of(i). (Four joints at a time, one per lane, measured no
-// faster: the two divisions per joint bound it either way.)
+// Joint i of the loop is joint_of(i).
 template <class JointOf>
 __attribute__((target("avx2"))) inline void PackRotationsAvx2(const Eigen::Quaterniond* q, size_t count, JointOf joint_of,
                                                             Eigen::Vector4d* previous, float* out, size_t stride) {

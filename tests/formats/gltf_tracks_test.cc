@@ -15,12 +15,12 @@ namespace {
 
 // What the exporter did before PackRotation was written out: Eigen's own expressions.
 void PackWithEigen(const Eigen::Quaterniond& q, Eigen::Vector4d& previous, float* out) {
-  Eigen::Vector4d v = Eigen::Vector4d(q.x(), q.y(), q.z(), q.w()).normalized();
+  Eigen::Vector4d v(q.x(), q.y(), q.z(), q.w());
+  if (std::abs(v.squaredNorm() - 1.0) > kUnitTolerance) v.normalize();
   if (v.dot(previous) < 0) v = -v;
   previous = v;
-  const Eigen::Vector4d rounded = v.cast<float>().cast<double>();
-  const Eigen::Vector4f unit = (rounded / rounded.norm()).cast<float>();
-  for (int c = 0; c < 4; ++c) out[c] = unit[c];
+  const Eigen::Vector4f rounded = v.cast<float>();
+  for (int c = 0; c < 4; ++c) out[c] = rounded[c];
 }
 
 std::vector<Eigen::Quaterniond> Samples() {
@@ -31,6 +31,8 @@ std::vector<Eigen::Quaterniond> Samples() {
   for (int n = 0; n < 200000; ++n) {
     Eigen::Quaterniond r(normal(rng), normal(rng), normal(rng), normal(rng));
     if (n % 3 == 0) r.coeffs() *= scale(rng);  // not unit: fills and imports may give these
+    if (n % 5 == 1) r.normalize();              // unit to an ulp or two, as composed rotations are
+    if (n % 35 == 11) r.coeffs() *= n % 2 != 0 ? 1.0 + 1e-13 : 1.0 + 1e-11;  // just inside, just outside the tolerance
     if (n % 17 == 0) r.coeffs()[n % 4] = 0.0;
     if (n % 19 == 0) r.coeffs()[(n + 1) % 4] = -0.0;
     q.push_back(r);
