@@ -128,6 +128,12 @@ TEST(Cli, RefusesToOverwriteAnInput) {
   RunResult r2 = RunCli("convert " + Quote(in) + " -o " + Quote(dir) + " --format bvh");
   EXPECT_EQ(r2.exit_code, 4) << r2.output;
   EXPECT_EQ(ReadAll(in), before);
+  // An input that cannot be identified (it does not exist) is still known by its path.
+  const std::string missing = dir + "/missing.bvh";
+  RunResult r3 = RunCli("convert " + Quote(missing) + " " + Quote(dir + "/./missing.bvh"));
+  EXPECT_EQ(r3.exit_code, 4) << r3.output;
+  EXPECT_NE(r3.output.find("refusing to overwrite"), std::string::npos) << r3.output;
+  EXPECT_FALSE(fs::exists(missing));
 }
 
 TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
