@@ -2,8 +2,9 @@
 
 namespace mocapfill::bvh::rows {
 
-FrameComposer::FrameComposer(const std::vector<JointSampler>& samplers, const std::vector<ChannelGroup>& groups)
-    : samplers_(samplers) {
+FrameComposer::FrameComposer(const std::vector<JointSampler>& samplers, const std::vector<ChannelGroup>& groups,
+                             bool every_translation)
+    : samplers_(samplers), every_translation_(every_translation) {
   // Channel -> joint for rotation channels, then each group to the joint whose rotation
   // channels it holds (a group is one joint's channels of one kind).
   std::vector<int> rotation_joint;
@@ -42,9 +43,11 @@ FrameComposer::FrameComposer(const std::vector<JointSampler>& samplers, const st
 void FrameComposer::Compose(const RowScanner& scanner, const double* row, const Eigen::Quaterniond* previous,
                             Eigen::Quaterniond* rotations, Eigen::Vector3d* translations) {
   const size_t joints = samplers_.size();
-  for (size_t j = 0; j < joints; ++j) translations[j] = samplers_[j].offset;
+  if (every_translation_)
+    for (size_t j = 0; j < joints; ++j) translations[j] = samplers_[j].offset;
   for (const uint32_t j : position_joints_) {
     const JointSampler& s = samplers_[j];
+    translations[j] = s.offset;
     for (int a = 0; a < 3; ++a)
       if (s.position_index[a] >= 0) translations[j][a] = row[s.position_index[a]];
   }

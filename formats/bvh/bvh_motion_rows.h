@@ -155,7 +155,10 @@ class RowScanner {
 // trigonometry (they are the identity, as EulerComposer gives them).
 class FrameComposer {
  public:
-  FrameComposer(const std::vector<JointSampler>& samplers, const std::vector<ChannelGroup>& groups);
+  // every_translation false: only joints with position channels get translations[j] (the
+  // others' entries are left alone), for callers that read no other.
+  FrameComposer(const std::vector<JointSampler>& samplers, const std::vector<ChannelGroup>& groups,
+                bool every_translation = true);
   void Compose(const RowScanner& scanner, const double* row, const Eigen::Quaterniond* previous,
                Eigen::Quaterniond* rotations, Eigen::Vector3d* translations);
 
@@ -166,6 +169,7 @@ class FrameComposer {
 
  private:
   const std::vector<JointSampler>& samplers_;
+  bool every_translation_;
   std::vector<uint32_t> position_joints_;  // joints with position channels
   // Joint j's rotation channels are in groups rotation_groups_[group_begin_[j], group_begin_[j + 1]).
   std::vector<uint32_t> rotation_groups_, group_begin_;

@@ -41,7 +41,7 @@ Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64
   const size_t joints = samplers.size();
   const ClipTrackLayout& layout = target.layout;
   std::vector<double> row(target.channels);
-  bvh::rows::FrameComposer composer(samplers, *target.groups);
+  bvh::rows::FrameComposer composer(samplers, *target.groups, /*every_translation=*/false);
   bvh::rows::RowScanner scanner(*target.groups, target.channels);
   std::vector<Eigen::Quaterniond> previous(joints), current(joints);
   std::vector<Eigen::Vector3d> translations(joints);

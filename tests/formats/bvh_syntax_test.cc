@@ -315,7 +315,7 @@ TEST(BvhSyntax, FrameComposerEqualsComposingJointByJoint) {
     }
     samplers.push_back(s);
   }
-  bvh::rows::FrameComposer composer(samplers, groups);
+  bvh::rows::FrameComposer composer(samplers, groups), positions_composer(samplers, groups, false);
   bvh::rows::RowScanner scanner(groups, channel);
   const size_t joints = samplers.size();
   std::vector<Eigen::Quaterniond> rotations(3000 * joints);
@@ -340,6 +340,15 @@ TEST(BvhSyntax, FrameComposerEqualsComposingJointByJoint) {
     Eigen::Quaterniond* now = &rotations[frame * joints];
     const Eigen::Quaterniond* before = frame > 0 ? now - joints : nullptr;
     composer.Compose(scanner, row.data(), before, now, translations.data());
+    // Without every translation: the same rotations, position joints' translations, nothing else.
+    std::vector<Eigen::Quaterniond> now_again(joints);
+    std::vector<Eigen::Vector3d> positions_only(joints, Eigen::Vector3d::Constant(-99.0));
+    positions_composer.Compose(scanner, row.data(), before, now_again.data(), positions_only.data());
+    for (size_t j = 0; j < joints; ++j) {
+      ASSERT_EQ(std::memcmp(now_again[j].coeffs().data(), now[j].coeffs().data(), 4 * sizeof(double)), 0) << j;
+      const bool positioned = samplers[j].position_index[1] >= 0;
+      ASSERT_EQ(positions_only[j], positioned ? translations[j] : Eigen::Vector3d::Constant(-99.0)) << j;
+    }
     for (size_t j = 0; j < joints; ++j) {
       const bvh::rows::JointSampler& s = samplers[j];
       std::array<double, 3> a{0.0, 0.0, 0.0};
