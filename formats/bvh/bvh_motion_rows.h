@@ -151,7 +151,7 @@ class RowScanner {
 // read `row`, says so), or that has no rotation channels, is not composed again: its
 // rotation is previous[j], which is what composing and the hemisphere flip would give bit for
 // bit (the same angles give the same q, and q turned towards +-q is that +-q). CMU's joints
-// that hold still are a sixth of its rotations. Joints whose angles are all zero skip the
+// that hold still are 15% of its rotations. Joints whose angles are all zero skip the
 // trigonometry (they are the identity, as EulerComposer gives them).
 class FrameComposer {
  public:

@@ -27,7 +27,7 @@ __attribute__((target("avx2"))) inline void PackOneAvx2(const Eigen::Quaterniond
                                                       float* out) {
   __m256d v = _mm256_loadu_pd(q.coeffs().data());  // x, y, z, w
   const __m256d n2 = SumOfLanes(_mm256_mul_pd(v, v));
-  if (const double length2 = _mm256_cvtsd_f64(n2); length2 > 0.0 && std::abs(length2 - 1.0) > kUnitTolerance)
+  if (const double length2 = _mm256_cvtsd_f64(n2); length2 > 0.0 && std::abs(length2 - 1.0) > kRotationUnitTolerance)
     v = _mm256_div_pd(v, _mm256_sqrt_pd(n2));
   const __m256d dot = SumOfLanes(_mm256_mul_pd(v, _mm256_loadu_pd(previous.data())));
   if (_mm256_cvtsd_f64(dot) < 0) v = _mm256_xor_pd(v, _mm256_set1_pd(-0.0));  // negation, zeros included

@@ -32,7 +32,7 @@ struct ClipTrackLayout {
 Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_hz, float* times);
 
 // One rotation as the track stores it: normalised (unless its squared length is within
-// kUnitTolerance of 1 already, as a composed rotation's is to an ulp or two: dividing by
+// kRotationUnitTolerance of 1 already, as a composed rotation's is to an ulp or two: dividing by
 // such a length moves a value by less than the float32 rounding after it), turned to the
 // hemisphere of `previous` (the joint's packed rotation one frame earlier, zero before the
 // first frame; updated here) and rounded to float32. The rounding leaves the length within
@@ -42,13 +42,13 @@ Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_h
 // and halved the packing's time. The sums run in the order Eigen's SSE2 code adds a
 // Vector4d's terms, (x + z) + (y + w): these are its squaredNorm() and dot() written out,
 // bit for bit, so that PackRotations can do the same four lanes at once.
-inline constexpr double kUnitTolerance = 1e-12;
+inline constexpr double kRotationUnitTolerance = 1e-12;
 inline void PackRotation(const Eigen::Quaterniond& q, Eigen::Vector4d& previous, float* out) {
   const auto sum = [](const double* a) { return (a[0] + a[2]) + (a[1] + a[3]); };
   double v[4] = {q.x(), q.y(), q.z(), q.w()};
   const double squares[4] = {v[0] * v[0], v[1] * v[1], v[2] * v[2], v[3] * v[3]};
   const double n2 = sum(squares);
-  if (n2 > 0.0 && std::abs(n2 - 1.0) > kUnitTolerance) {
+  if (n2 > 0.0 && std::abs(n2 - 1.0) > kRotationUnitTolerance) {
     const double n = std::sqrt(n2);
     for (double& c : v) c /= n;
   }

@@ -16,7 +16,7 @@ namespace {
 // What the exporter did before PackRotation was written out: Eigen's own expressions.
 void PackWithEigen(const Eigen::Quaterniond& q, Eigen::Vector4d& previous, float* out) {
   Eigen::Vector4d v(q.x(), q.y(), q.z(), q.w());
-  if (std::abs(v.squaredNorm() - 1.0) > kUnitTolerance) v.normalize();
+  if (std::abs(v.squaredNorm() - 1.0) > kRotationUnitTolerance) v.normalize();
   if (v.dot(previous) < 0) v = -v;
   previous = v;
   const Eigen::Vector4f rounded = v.cast<float>();
