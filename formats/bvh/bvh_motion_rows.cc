@@ -2,6 +2,16 @@
 
 namespace mocapfill::bvh::rows {
 
+namespace {
+
+// q, or -q when that is nearer the joint's rotation one frame earlier (none for a first frame).
+Eigen::Quaterniond TowardsPrevious(Eigen::Quaterniond q, const Eigen::Quaterniond* previous, size_t j) {
+  if (previous != nullptr && q.coeffs().dot(previous[j].coeffs()) < 0.0) q.coeffs() = -q.coeffs();
+  return q;
+}
+
+}  // namespace
+
 FrameComposer::FrameComposer(const std::vector<JointSampler>& samplers, const std::vector<ChannelGroup>& groups,
                              bool every_translation)
     : samplers_(samplers), every_translation_(every_translation) {
@@ -69,9 +79,7 @@ void FrameComposer::Compose(const RowScanner& scanner, const double* row, const 
     // Joints that never turn (CMU's fingers) are exactly the identity, as EulerComposer
     // gives them (the trigonometry would give -0 for -0 angles).
     if (a0 == 0.0 && a1 == 0.0 && a2 == 0.0) {
-      Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
-      if (previous != nullptr && q.coeffs().dot(previous[j].coeffs()) < 0.0) q.coeffs() = -q.coeffs();
-      rotations[j] = q;
+      rotations[j] = TowardsPrevious(Eigen::Quaterniond::Identity(), previous, j);
       continue;
     }
     double* half = &half_angles_[3 * turning];
@@ -85,9 +93,7 @@ void FrameComposer::Compose(const RowScanner& scanner, const double* row, const 
   SinCosDegreesBatch(half_angles_.data(), 3 * turning, sines_.data(), cosines_.data());
   for (size_t i = 0; i < turning; ++i) {
     const size_t j = turning_[i];
-    Eigen::Quaterniond q = samplers_[j].compose(&sines_[3 * i], &cosines_[3 * i]);
-    if (previous != nullptr && q.coeffs().dot(previous[j].coeffs()) < 0.0) q.coeffs() = -q.coeffs();
-    rotations[j] = q;
+    rotations[j] = TowardsPrevious(samplers_[j].compose(&sines_[3 * i], &cosines_[3 * i]), previous, j);
   }
 }
 
