@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <type_traits>
+#include <utility>
 
 namespace mocapfill {
 
@@ -26,6 +27,13 @@ class FileDescriptor {
   }
   FileDescriptor(const FileDescriptor&) = delete;
   FileDescriptor& operator=(const FileDescriptor&) = delete;
+  FileDescriptor& operator=(FileDescriptor&& other) noexcept {
+    if (this != &other) {
+      if (fd_ >= 0) ::close(fd_);
+      fd_ = std::exchange(other.fd_, -1);
+    }
+    return *this;
+  }
   int get() const { return fd_; }
   // Closes now and reports whether that worked (a write error may only show here).
   bool Close() {
@@ -52,12 +60,10 @@ ssize_t ReadInto(int fd, Bytes& bytes, size_t filled) {
   return static_cast<ssize_t>(filled);
 }
 
-// The whole file into `Bytes` (std::string or LargeBuffer), with plain POSIX reads into a
-// buffer sized from fstat: a stream-based read copied the file three times and was a tenth
-// of a small conversion.
-template <class Bytes>
-Result<Bytes> ReadWhole(const std::string& path) {
-  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+// Opens `path` for reading into `fd` and returns what fstat says of it, or an error
+// naming the path.
+Result<struct stat> OpenForReading(const std::string& path, FileDescriptor& fd) {
+  fd = FileDescriptor(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (fd.get() < 0) {
     const int error = errno;
     std::error_code ec;
@@ -67,6 +73,14 @@ Result<Bytes> ReadWhole(const std::string& path) {
   struct stat info {};
   if (::fstat(fd.get(), &info) != 0) return IoError(path + ": read failed");
   if (S_ISDIR(info.st_mode)) return IoError(path + ": is a directory, expected a file");
+  return info;
+}
+
+// The whole open file into `Bytes` (std::string or LargeBuffer), with plain POSIX reads
+// into a buffer sized from fstat: a stream-based read copied the file three times and was
+// a tenth of a small conversion.
+template <class Bytes>
+Result<Bytes> ReadOpened(const FileDescriptor& fd, const struct stat& info, const std::string& path) {
   // Regular files are read in one go; pipes and special files (size 0) in chunks. Either
   // way reading goes on to the end, in case the file grew since fstat.
   Bytes bytes;
@@ -89,6 +103,13 @@ Result<Bytes> ReadWhole(const std::string& path) {
   }
 }
 
+template <class Bytes>
+Result<Bytes> ReadWhole(const std::string& path) {
+  FileDescriptor fd(-1);
+  ASSIGN_OR_RETURN(const struct stat info, OpenForReading(path, fd));
+  return ReadOpened<Bytes>(fd, info, path);
+}
+
 bool WriteAll(int fd, std::string_view bytes) {
   while (!bytes.empty()) {
     const ssize_t n = ::write(fd, bytes.data(), bytes.size());
@@ -104,6 +125,15 @@ bool WriteAll(int fd, std::string_view bytes) {
 Result<std::string> ReadFileBytes(const std::string& path) { return ReadWhole<std::string>(path); }
 
 Result<LargeBuffer> ReadFileToBuffer(const std::string& path) { return ReadWhole<LargeBuffer>(path); }
+
+Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes) {
+  FileDescriptor fd(-1);
+  ASSIGN_OR_RETURN(const struct stat info, OpenForReading(path, fd));
+  if (S_ISREG(info.st_mode) && info.st_size > 0 && static_cast<size_t>(info.st_size) >= map_min_bytes)
+    if (std::optional<FileText> text = FileText::Map(fd.get(), static_cast<size_t>(info.st_size))) return std::move(*text);
+  ASSIGN_OR_RETURN(LargeBuffer bytes, ReadOpened<LargeBuffer>(fd, info, path));
+  return FileText(std::move(bytes));
+}
 
 void PrefaultForWrite(void* data, size_t bytes) {
 #ifdef MADV_POPULATE_WRITE

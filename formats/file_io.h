@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "formats/file_text.h"
 #include "formats/large_buffer.h"
 #include "processing/core/status.h"
 
@@ -18,6 +19,14 @@ namespace mocapfill {
 Result<std::string> ReadFileBytes(const std::string& path);
 // The same into a LargeBuffer: for motion files, which may be megabytes.
 Result<LargeBuffer> ReadFileToBuffer(const std::string& path);
+
+// Regular files of at least this size are mapped by ReadFileText.
+inline constexpr size_t kMapFileMinBytes = size_t{1} << 20;
+
+// The file's bytes for parsing: a regular file of at least `map_min_bytes` mapped
+// read-only (file_text.h: check intact() after use), anything else, or a file that cannot
+// be mapped, read as ReadFileToBuffer reads it. Fails with kIoError naming the path.
+Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes = kMapFileMinBytes);
 
 // Writes `bytes` to a temporary file beside `path`, then renames it over `path`, so a
 // crash or error never leaves a partial file. Fails with kIoError naming the path.

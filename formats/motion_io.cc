@@ -40,8 +40,12 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
   if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
     return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
   if (ext == ".bvh") {
-    ASSIGN_OR_RETURN(const LargeBuffer text, ReadFileToBuffer(path));
-    return ReadBvh(text.view(), path, options);
+    ASSIGN_OR_RETURN(const FileText text, ReadFileText(path));
+    Result<Scene> scene = ReadBvh(text.view(), path, options);
+    if (text.intact()) return scene;
+    // The file was truncated while mapped: what it holds now, read afresh, is the input.
+    ASSIGN_OR_RETURN(const LargeBuffer bytes, ReadFileToBuffer(path));
+    return ReadBvh(bytes.view(), path, options);
   }
   ASSIGN_OR_RETURN(std::string bytes, ReadFileBytes(path));
   return ReadGltf(bytes, path, options);
@@ -71,12 +75,14 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
                           const ExportOptions& export_options) {
   ConvertResult result;
   if (LowerExtension(input) == ".bvh" && LowerExtension(output) == ".glb") {
-    Result<LargeBuffer> text = ReadFileToBuffer(input);
+    Result<FileText> text = ReadFileText(input);
     if (!text.ok()) {
       result.status = text.status();
       return result;
     }
-    if (std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options)) {
+    std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options);
+    // A file truncated while mapped goes the clip path, which reads it again.
+    if (glb && text->intact()) {
       result.status = WriteFileAtomicParts(output, {glb->head, glb->tracks.view()});
       result.failed_writing = !result.status.ok();
       return result;

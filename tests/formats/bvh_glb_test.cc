@@ -122,6 +122,33 @@ TEST(BvhGlbStream, HemisphereFlipsAtTheSplitAreJoinedExactly) {
   }
 }
 
+// ConvertFile maps inputs of kMapFileMinBytes and more (formats/file_text.h). A text that
+// ends exactly at a page boundary has no byte after it that a parser could read: the mapped
+// conversion (whole pages, nothing beyond) must write what the clip path writes.
+TEST(BvhGlbStream, MappedInputEndingOnAPageBoundaryConvertsAsTheClipPath) {
+  std::string text = Enlarge(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), kMapFileMinBytes + 1);
+  constexpr size_t kPage = 4096;
+  // Spaces after the last row's newline, then a last newline on the page's final byte.
+  const size_t padded = (text.size() + 1 + kPage - 1) / kPage * kPage;
+  text.append(padded - text.size() - 1, ' ');
+  text += '\n';
+  ASSERT_EQ(text.size() % kPage, 0u);
+  const std::string dir = testing::TestOutputDir("bvh_glb_mapped");
+  const std::string input = dir + "/page_end.bvh";
+  ASSERT_TRUE(WriteFileAtomic(input, text).ok());
+  const Result<FileText> mapped = ReadFileText(input);
+  ASSERT_TRUE(mapped.ok());
+  EXPECT_TRUE(mapped->mapped());
+  const ConvertResult converted = ConvertFile(input, dir + "/page_end.glb", {}, {});
+  ASSERT_TRUE(converted.status.ok()) << converted.status.message();
+  const Result<std::string> expected = ThroughTheClip(text, input);
+  ASSERT_TRUE(expected.ok());
+  EXPECT_EQ(ReadText(dir + "/page_end.glb"), *expected);
+  const Result<Scene> imported = ImportFile(input);
+  ASSERT_TRUE(imported.ok()) << imported.status().message();
+  EXPECT_EQ(imported->clips.at(0).num_frames, ReadBvh(text, input, {})->clips.at(0).num_frames);
+}
+
 // Whatever the clip path would warn about or reject, and Z-up sources, are left to it, so
 // that ConvertFile reports and writes exactly what ImportFile and ExportFile do.
 TEST(BvhGlbStream, AnythingButAPlainImportIsLeftToTheClipPath) {

@@ -156,5 +156,65 @@ TEST(ReadFileToBuffer, FailuresNameThePath) {
   EXPECT_NE(folder.status().message().find("is a directory"), std::string::npos);
 }
 
+TEST(ReadFileText, MapsLargeRegularFilesAndReadsTheRest) {
+  const std::string dir = testing::ScratchDir("read_file_text");
+  for (size_t bytes : {size_t{0}, size_t{17}, kMapFileMinBytes - 1, kMapFileMinBytes, size_t{3} << 20,
+                       (size_t{2} << 20) + 5}) {
+    const std::string path = dir + "/f" + std::to_string(bytes);
+    const std::string pattern = Pattern(bytes);
+    ASSERT_TRUE(WriteFileAtomic(path, pattern).ok());
+    Result<FileText> text = ReadFileText(path);
+    ASSERT_TRUE(text.ok()) << text.status().message();
+    EXPECT_EQ(text->mapped(), bytes >= kMapFileMinBytes) << bytes;
+    EXPECT_EQ(text->view(), pattern) << bytes;
+    EXPECT_TRUE(text->intact());
+    FileText moved = std::move(*text);
+    EXPECT_EQ(moved.view(), pattern) << bytes;
+  }
+  // A pipe is read, whatever the threshold.
+  const std::string fifo = dir + "/pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string pattern = Pattern(300000);
+  std::thread writer([&] {
+    std::ofstream out(fifo, std::ios::binary);
+    out.write(pattern.data(), static_cast<std::streamsize>(pattern.size()));
+  });
+  const Result<FileText> piped = ReadFileText(fifo, 1);
+  writer.join();
+  ASSERT_TRUE(piped.ok());
+  EXPECT_FALSE(piped->mapped());
+  EXPECT_EQ(piped->view(), pattern);
+  const Result<FileText> missing = ReadFileText(dir + "/missing.bvh");
+  EXPECT_EQ(missing.status().code(), ErrorCode::kIoError);
+  EXPECT_NE(missing.status().message().find(dir + "/missing.bvh: cannot open"), std::string::npos);
+  EXPECT_NE(ReadFileText(dir).status().message().find("is a directory"), std::string::npos);
+}
+
+// A mapped file cut short by someone else: the pages it lost read as zeros instead of
+// ending the process with SIGBUS, and the text says it is no longer intact. Another
+// mapping's text stays intact.
+TEST(ReadFileText, TruncationUnderAMappingIsSurvivedAndReported) {
+  const std::string dir = testing::ScratchDir("read_file_text_truncated");
+  const std::string path = dir + "/cut.bvh", other_path = dir + "/kept.bvh";
+  const std::string pattern = Pattern(size_t{3} << 20);
+  ASSERT_TRUE(WriteFileAtomic(path, pattern).ok());
+  ASSERT_TRUE(WriteFileAtomic(other_path, pattern).ok());
+  const Result<FileText> text = ReadFileText(path);
+  const Result<FileText> other = ReadFileText(other_path);
+  ASSERT_TRUE(text.ok() && other.ok());
+  ASSERT_TRUE(text->mapped());
+  const size_t kept = (size_t{1} << 20) + 100;
+  ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(kept)), 0);
+  const std::string_view view = text->view();
+  ASSERT_EQ(view.size(), pattern.size());
+  EXPECT_EQ(view.substr(0, kept), std::string_view(pattern).substr(0, kept));
+  size_t nonzero_after = 0;
+  for (size_t i = (kept + 4095) / 4096 * 4096; i < view.size(); ++i) nonzero_after += view[i] != 0;
+  EXPECT_EQ(nonzero_after, 0u);
+  EXPECT_FALSE(text->intact());
+  EXPECT_EQ(other->view(), pattern);
+  EXPECT_TRUE(other->intact());
+}
+
 }  // namespace
 }  // namespace mocapfill
