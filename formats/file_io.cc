@@ -1,5 +1,7 @@
 #include "formats/file_io.h"
 
+#include "formats/file_descriptor.h"
+
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -17,34 +19,6 @@
 namespace mocapfill {
 
 namespace {
-
-// Closes a descriptor on every path out of a function.
-class FileDescriptor {
- public:
-  explicit FileDescriptor(int fd) : fd_(fd) {}
-  ~FileDescriptor() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  FileDescriptor(const FileDescriptor&) = delete;
-  FileDescriptor& operator=(const FileDescriptor&) = delete;
-  FileDescriptor& operator=(FileDescriptor&& other) noexcept {
-    if (this != &other) {
-      if (fd_ >= 0) ::close(fd_);
-      fd_ = std::exchange(other.fd_, -1);
-    }
-    return *this;
-  }
-  int get() const { return fd_; }
-  // Closes now and reports whether that worked (a write error may only show here).
-  bool Close() {
-    const int fd = fd_;
-    fd_ = -1;
-    return ::close(fd) == 0;
-  }
-
- private:
-  int fd_;
-};
 
 // Reads from fd at `bytes[filled...]` until `bytes` is full or the file ends; returns
 // the bytes now held, or -1 on a read error.
@@ -110,15 +84,6 @@ Result<Bytes> ReadWhole(const std::string& path) {
   return ReadOpened<Bytes>(fd, info, path);
 }
 
-bool WriteAll(int fd, std::string_view bytes) {
-  while (!bytes.empty()) {
-    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    bytes.remove_prefix(static_cast<size_t>(n));
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -147,51 +112,6 @@ void PrefaultForWrite(void* data, size_t bytes) {
   (void)data;
   (void)bytes;
 #endif
-}
-
-Status WriteFileAtomic(const std::string& path, const std::string& bytes) {
-  return WriteFileAtomicParts(path, {std::string_view(bytes)});
-}
-
-namespace {
-
-// Puts the finished temporary file `tmp` at `path`. When `path` already holds a regular
-// file, the two are swapped (renameat2 RENAME_EXCHANGE) and the old one, now under the
-// temporary name, is unlinked: `path` names a complete file at every instant, exactly as
-// with a rename over it. A plain rename over an existing file makes ext4 start writing the
-// new file's data out before it returns (its auto_da_alloc rule), about 1.2 ms for a CMU
-// clip's 1.4 MB .glb and most of a small conversion's output cost; the swap does not.
-// Where the swap is unsupported (other file systems, old kernels), or nothing is there
-// yet, a plain rename does the job.
-bool MoveIntoPlace(const std::string& tmp, const std::string& path) {
-  struct stat existing {};
-  if (::lstat(path.c_str(), &existing) == 0 && S_ISREG(existing.st_mode) &&
-      ::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, path.c_str(), RENAME_EXCHANGE) == 0) {
-    ::unlink(tmp.c_str());  // the previous file; if this fails, a stale temporary is all that is left
-    return true;
-  }
-  return std::rename(tmp.c_str(), path.c_str()) == 0;
-}
-
-}  // namespace
-
-Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts) {
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  FileDescriptor fd(::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666));
-  if (fd.get() < 0) return IoError(path + ": cannot create (" + std::strerror(errno) + ")");
-  bool written = true;
-  for (std::string_view part : parts) written = written && WriteAll(fd.get(), part);
-  const bool closed = fd.Close();
-  if (!written || !closed) {
-    std::remove(tmp.c_str());
-    return IoError(path + ": write failed");
-  }
-  if (!MoveIntoPlace(tmp, path)) {
-    const std::string reason = std::strerror(errno);
-    std::remove(tmp.c_str());
-    return IoError(path + ": cannot rename temporary file (" + reason + ")");
-  }
-  return OkStatus();
 }
 
 bool IsSameFile(const std::string& a, const std::string& b) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "formats/atomic_writer.h"
 #include "formats/file_text.h"
 #include "formats/large_buffer.h"
 #include "processing/core/status.h"

@@ -4,6 +4,7 @@
 #include "formats/bvh/bvh_reader.h"
 #include "formats/bvh/bvh_writer.h"
 #include "formats/bvh_glb/bvh_to_glb.h"
+#include "formats/atomic_writer.h"
 #include "formats/file_io.h"
 #include "formats/gltf/gltf_reader.h"
 #include "formats/gltf/gltf_writer.h"
@@ -13,6 +14,11 @@ namespace mocapfill {
 namespace {
 
 const char* const kAssimpExtensions[] = {".fbx", ".dae", ".x", ".3ds", ".ms3d", ".md5mesh", ".ogex", ".smd", ".b3d"};
+
+Status WriteOut(AtomicWriter* writer, const std::string& path, std::initializer_list<std::string_view> parts) {
+  if (writer != nullptr) return writer->Write(path, parts);
+  return WriteFileAtomicParts(path, parts);
+}
 
 bool IsAssimpExtension(const std::string& ext) {
   for (const char* e : kAssimpExtensions)
@@ -51,13 +57,13 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
   return ReadGltf(bytes, path, options);
 }
 
-Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options) {
+Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options, AtomicWriter* writer) {
   const std::string ext = LowerExtension(path);
   if (ext == ".glb") {
     Result<GlbFile> glb = WriteGlb(scene, options);
     if (!glb.ok()) return glb.status().WithContext(path);
     const std::string_view bin(reinterpret_cast<const char*>(glb->bin.data()), glb->bin.size());
-    return WriteFileAtomicParts(path, {glb->head, bin});
+    return WriteOut(writer, path, {glb->head, bin});
   }
   Result<std::string> bytes = Status();
   if (ext == ".bvh") {
@@ -68,11 +74,11 @@ Status ExportFile(const Scene& scene, const std::string& path, const ExportOptio
     return InvalidArgument(path + ": unknown output extension '" + ext + "' (expected .gltf, .glb or .bvh)");
   }
   if (!bytes.ok()) return bytes.status().WithContext(path);
-  return WriteFileAtomic(path, *bytes);
+  return WriteOut(writer, path, {std::string_view(*bytes)});
 }
 
 ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
-                          const ExportOptions& export_options) {
+                          const ExportOptions& export_options, AtomicWriter* writer) {
   ConvertResult result;
   if (LowerExtension(input) == ".bvh" && LowerExtension(output) == ".glb") {
     Result<FileText> text = ReadFileText(input);
@@ -83,7 +89,7 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
     std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options);
     // A file truncated while mapped goes the clip path, which reads it again.
     if (glb && text->intact()) {
-      result.status = WriteFileAtomicParts(output, {glb->head, glb->tracks.view()});
+      result.status = WriteOut(writer, output, {glb->head, glb->tracks.view()});
       result.failed_writing = !result.status.ok();
       return result;
     }
@@ -94,7 +100,7 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
     return result;
   }
   result.warnings = std::move(scene->warnings);
-  result.status = ExportFile(*scene, output, export_options);
+  result.status = ExportFile(*scene, output, export_options, writer);
   result.failed_writing = !result.status.ok();
   return result;
 }

@@ -10,6 +10,8 @@
 
 namespace mocapfill {
 
+class AtomicWriter;  // formats/atomic_writer.h
+
 struct ImportOptions {
   // Length unit of the source: "auto" (format default, or detected from skeleton height
   // when that default is implausible), or one of "m", "cm", "mm", "in", "ft", "cmu"
@@ -42,8 +44,11 @@ struct ExportOptions {
 Result<Scene> ImportFile(const std::string& path, const ImportOptions& options = {});
 
 // Writes .gltf, .glb or .bvh by the extension of `path`. The write is atomic: the file
-// appears complete or not at all, and an existing file is replaced only on success.
-Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options = {});
+// appears complete or not at all, and an existing file is replaced only on success. A
+// caller writing many files passes its own `writer` (one per thread), which recycles the
+// replaced files (atomic_writer.h).
+Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options = {},
+                  AtomicWriter* writer = nullptr);
 
 // ImportFile then ExportFile, in one step: what a converter calls. A BVH becoming a .glb is
 // streamed (formats/bvh_glb): its rows go straight into the .glb's float32 tracks, with no
@@ -56,7 +61,7 @@ struct ConvertResult {
   std::vector<std::string> warnings;  // of the import
 };
 ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
-                          const ExportOptions& export_options);
+                          const ExportOptions& export_options, AtomicWriter* writer = nullptr);
 
 // True when the extension is one ImportFile reads / ExportFile writes.
 bool IsImportExtension(const std::string& path);

@@ -17,6 +17,7 @@
 #include "converter/console.h"
 #include "converter/exit_codes.h"
 #include "converter/import_flags.h"
+#include "formats/atomic_writer.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/spread_thread.h"
@@ -66,12 +67,13 @@ struct InputSet {
 };
 
 // Converts one file; returns the exit code and prints any error.
-int ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import, const InputSet& all_inputs) {
+int ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import, const InputSet& all_inputs,
+               AtomicWriter& writer) {
   if (all_inputs.Contains(job.output)) {
     PrintError(job.output + ": refusing to overwrite input file");
     return kExitOutput;
   }
-  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options);
+  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options, &writer);
   for (const std::string& warning : converted.warnings) PrintWarning(job.input + ": " + warning);
   if (!converted.status.ok()) {
     PrintError(converted.status.message());
@@ -131,8 +133,9 @@ int RunConvert(const ConvertArgs& args) {
   const InputSet inputs(args.inputs);
   std::atomic<size_t> next{0};
   auto work = [&] {
+    AtomicWriter writer;  // this worker's: re-used replaced outputs (formats/atomic_writer.h)
     for (size_t i = next++; i < jobs.size(); i = next++) {
-      codes[i] = ConvertOne(jobs[i], args, import, inputs);
+      codes[i] = ConvertOne(jobs[i], args, import, inputs, writer);
       progress.Advance();
     }
   };

@@ -2,17 +2,23 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "formats/atomic_writer.h"
 #include "formats/file_io.h"
 #include "formats/large_buffer.h"
 #include "tests/support/test_paths.h"
@@ -214,6 +220,96 @@ TEST(ReadFileText, TruncationUnderAMappingIsSurvivedAndReported) {
   EXPECT_FALSE(text->intact());
   EXPECT_EQ(other->view(), pattern);
   EXPECT_TRUE(other->intact());
+}
+
+std::vector<std::string> FolderEntries(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+ino_t InodeOf(const std::string& path) {
+  struct stat info {};
+  EXPECT_EQ(::stat(path.c_str(), &info), 0) << path;
+  return info.st_ino;
+}
+
+// A run of outputs over existing files: each replaced file is overwritten for the next
+// output (its inode moves on to the next path), contents are exact whatever the sizes,
+// and once the writer is gone only the outputs are left.
+TEST(AtomicWriter, ReplacedFilesAreReusedForTheNextOutputAndRemovedAtTheEnd) {
+  const std::string dir = testing::ScratchDir("atomic_writer_reuse");
+  const std::vector<std::string> names = {"a.glb", "b.glb", "c.glb", "d.glb"};
+  for (const std::string& name : names) ASSERT_TRUE(WriteFileAtomic(dir + "/" + name, Pattern(50000)).ok());
+  const std::vector<size_t> sizes = {200000, 10, 70000, 0};
+  {
+    AtomicWriter writer;
+    ino_t replaced = 0;
+    for (size_t i = 0; i < names.size(); ++i) {
+      const std::string path = dir + "/" + names[i];
+      const ino_t before = InodeOf(path);
+      const std::string content = Pattern(sizes[i]) + names[i];
+      ASSERT_TRUE(writer.Write(path, {content.substr(0, 3), content.substr(3)}).ok());
+      EXPECT_EQ(ReadFileBytes(path).value(), content);
+      if (i > 0) {
+        EXPECT_EQ(InodeOf(path), replaced) << "the file replaced by the write before";
+      }
+      replaced = before;
+      EXPECT_EQ(FolderEntries(dir).size(), names.size() + 1) << "the outputs and one spare";
+    }
+  }
+  EXPECT_EQ(FolderEntries(dir), names);
+}
+
+// A replaced file that another name still links to is never written over, and a reused
+// file gets the mode a new file gets rather than the one it had.
+TEST(AtomicWriter, LinkedSparesAreLeftAloneAndReusedOnesTakeANewFilesMode) {
+  const std::string dir = testing::ScratchDir("atomic_writer_links");
+  for (const char* name : {"/a.glb", "/b.glb", "/c.glb"}) ASSERT_TRUE(WriteFileAtomic(dir + name, "old").ok());
+  ASSERT_EQ(::link((dir + "/a.glb").c_str(), (dir + "/a_link.glb").c_str()), 0);
+  {
+    AtomicWriter writer;
+    ASSERT_TRUE(writer.Write(dir + "/a.glb", {"new a"}).ok());  // fresh file; the old a is the spare, linked twice
+    const ino_t linked = InodeOf(dir + "/a_link.glb");
+    ASSERT_TRUE(writer.Write(dir + "/b.glb", {"new b"}).ok());
+    EXPECT_NE(InodeOf(dir + "/b.glb"), linked);
+    EXPECT_EQ(ReadFileBytes(dir + "/a_link.glb").value(), "old");
+    const mode_t fresh = static_cast<mode_t>(std::filesystem::status(dir + "/b.glb").permissions());
+    // The old b is the spare now: made 0600, it is still reused with the fresh mode.
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().string().find(".tmp-") != std::string::npos) ::chmod(entry.path().c_str(), 0600);
+    ASSERT_TRUE(writer.Write(dir + "/c.glb", {"new c"}).ok());
+    EXPECT_EQ(static_cast<mode_t>(std::filesystem::status(dir + "/c.glb").permissions()), fresh);
+    EXPECT_EQ(ReadFileBytes(dir + "/c.glb").value(), "new c");
+    // Another folder: a new file there, the spare stays where it was.
+    const std::string other = testing::ScratchDir("atomic_writer_links_other");
+    ASSERT_TRUE(writer.Write(other + "/d.glb", {"new d"}).ok());
+    EXPECT_EQ(ReadFileBytes(other + "/d.glb").value(), "new d");
+  }
+  EXPECT_EQ(FolderEntries(dir), (std::vector<std::string>{"a.glb", "a_link.glb", "b.glb", "c.glb"}));
+}
+
+// Interrupted (SIGTERM) while holding a spare: the spare is removed, the process still
+// ends by the signal.
+TEST(AtomicWriter, InterruptedWritersLeaveNoSpareBehind) {
+  const std::string dir = testing::ScratchDir("atomic_writer_signal");
+  ASSERT_TRUE(WriteFileAtomic(dir + "/a.glb", "old").ok());
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    AtomicWriter writer;
+    if (!writer.Write(dir + "/a.glb", {"new"}).ok()) ::_exit(3);
+    if (FolderEntries(dir).size() != 2) ::_exit(4);  // the output and its spare
+    ::raise(SIGTERM);
+    ::_exit(5);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "exit " << WEXITSTATUS(status);
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_EQ(FolderEntries(dir), std::vector<std::string>{"a.glb"});
+  EXPECT_EQ(ReadFileBytes(dir + "/a.glb").value(), "new");
 }
 
 }  // namespace
