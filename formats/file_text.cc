@@ -129,6 +129,14 @@ void FileText::Release() {
   slot_ = -1;
 }
 
+void FileText::LeaveToExit() {
+  if (slot_ < 0) return;
+  g_slots[slot_].used.store(false, std::memory_order_release);  // nothing reads it any more
+  mapping_ = nullptr;
+  mapping_bytes_ = 0;
+  slot_ = -1;
+}
+
 std::string_view FileText::view() const {
   if (slot_ >= 0) return {mapping_, mapping_bytes_};
   return buffer_.view();

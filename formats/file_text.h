@@ -38,6 +38,10 @@ class FileText {
   // and zeros stood in for it: anything parsed from view() must be discarded.
   bool intact() const;
 
+  // Gives up the text without unmapping it: the mapping stays until the process exits.
+  // The text is empty afterwards.
+  void LeaveToExit();
+
  private:
   void Release();
 

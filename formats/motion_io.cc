@@ -46,9 +46,12 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
   if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
     return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
   if (ext == ".bvh") {
-    ASSIGN_OR_RETURN(const FileText text, ReadFileText(path));
+    ASSIGN_OR_RETURN(FileText text, ReadFileText(path));
     Result<Scene> scene = ReadBvh(text.view(), path, options);
-    if (text.intact()) return scene;
+    if (text.intact()) {
+      if (options.leave_input_to_exit) text.LeaveToExit();
+      return scene;
+    }
     // The file was truncated while mapped: what it holds now, read afresh, is the input.
     ASSIGN_OR_RETURN(const LargeBuffer bytes, ReadFileToBuffer(path));
     return ReadBvh(bytes.view(), path, options);
@@ -91,6 +94,7 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
     if (glb && text->intact()) {
       result.status = WriteOut(writer, output, {glb->head, glb->tracks.view()});
       result.failed_writing = !result.status.ok();
+      if (import_options.leave_input_to_exit) text->LeaveToExit();
       return result;
     }
   }

@@ -196,6 +196,21 @@ TEST(ReadFileText, MapsLargeRegularFilesAndReadsTheRest) {
   EXPECT_NE(ReadFileText(dir).status().message().find("is a directory"), std::string::npos);
 }
 
+// A text left to the process's exit is empty to its owner, and its pages stay mapped
+// (read here through the old view, which an munmap would have made fault).
+TEST(ReadFileText, TextLeftToExitStaysMapped) {
+  const std::string dir = testing::ScratchDir("read_file_text_leave");
+  const std::string pattern = Pattern(size_t{2} << 20);
+  ASSERT_TRUE(WriteFileAtomic(dir + "/f.bvh", pattern).ok());
+  Result<FileText> text = ReadFileText(dir + "/f.bvh");
+  ASSERT_TRUE(text.ok() && text->mapped());
+  const std::string_view old_view = text->view();
+  text->LeaveToExit();
+  EXPECT_FALSE(text->mapped());
+  EXPECT_TRUE(text->view().empty());
+  EXPECT_EQ(old_view, pattern);
+}
+
 // A mapped file cut short by someone else: the pages it lost read as zeros instead of
 // ending the process with SIGBUS, and the text says it is no longer intact. Another
 // mapping's text stays intact.
