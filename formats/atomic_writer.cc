@@ -130,6 +130,11 @@ bool AtomicWriter::WriteOverSpare(const std::string& path, const std::string& fo
   struct stat info {};
   bool ok = fd.get() >= 0 && ::fstat(fd.get(), &info) == 0 && S_ISREG(info.st_mode) && info.st_nlink == 1 &&
             info.st_uid == ::geteuid();
+  // Nobody else may have it open: a reader (or a mapping) of the file it was must keep
+  // reading that file, as after a rename over it. A write lease is granted only when no
+  // other open file refers to it; released at once, it serves as that test (no new open
+  // can find it later: only this writer knows its temporary name).
+  ok = ok && ::fcntl(fd.get(), F_SETLEASE, F_WRLCK) == 0 && ::fcntl(fd.get(), F_SETLEASE, F_UNLCK) == 0;
   if (ok && (info.st_mode & 07777) != new_file_mode_) ok = ::fchmod(fd.get(), new_file_mode_) == 0;
   // Written over from the start and then cut to length: truncating to zero first would
   // make ext4 write the data out on close (auto_da_alloc, as for a rename over a file).

@@ -17,7 +17,8 @@ namespace mocapfill {
 // new file's inode is found by stepping over the inodes freed in the last minutes, one
 // buffer lookup each: re-converting the 174 Bandai clips spent a third of its time there
 // and in the folder lock held meanwhile. A spare is reused only while no other name links
-// to it and this user owns it, and it takes the mode a new file would get. The writer's
+// to it, no process has it open (or mapped) and this user owns it, and it takes the mode a
+// new file would get. The writer's
 // destructor, and SIGINT, SIGTERM or SIGHUP meanwhile, remove the spare.
 // One writer per thread; writers on several threads may share a folder.
 class AtomicWriter {

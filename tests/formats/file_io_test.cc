@@ -291,7 +291,23 @@ TEST(AtomicWriter, LinkedSparesAreLeftAloneAndReusedOnesTakeANewFilesMode) {
     EXPECT_NE(InodeOf(dir + "/b.glb"), linked);
     EXPECT_EQ(ReadFileBytes(dir + "/a_link.glb").value(), "old");
     const mode_t fresh = static_cast<mode_t>(std::filesystem::status(dir + "/b.glb").permissions());
-    // The old b is the spare now: made 0600, it is still reused with the fresh mode.
+    // The old b is the spare now; while someone reads it, it is not written over.
+    std::string spare;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().string().find(".tmp-") != std::string::npos) spare = entry.path().string();
+    ASSERT_FALSE(spare.empty());
+    {
+      const int reader = ::open(spare.c_str(), O_RDONLY);
+      ASSERT_GE(reader, 0);
+      const ino_t read_inode = InodeOf(spare);
+      ASSERT_TRUE(writer.Write(dir + "/c.glb", {"newer c"}).ok());
+      EXPECT_NE(InodeOf(dir + "/c.glb"), read_inode);
+      char held[8] = {};
+      EXPECT_EQ(::pread(reader, held, sizeof(held), 0), 3);
+      EXPECT_EQ(std::string(held), "old");
+      ::close(reader);
+    }
+    // The first c is the spare now: made 0600, it is still reused, with the fresh mode.
     for (const auto& entry : std::filesystem::directory_iterator(dir))
       if (entry.path().string().find(".tmp-") != std::string::npos) ::chmod(entry.path().c_str(), 0600);
     ASSERT_TRUE(writer.Write(dir + "/c.glb", {"new c"}).ok());
