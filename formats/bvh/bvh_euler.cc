@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "formats/cpu_avx2.h"
+
 namespace mocapfill::bvh {
 
 namespace {
@@ -101,12 +103,13 @@ EulerComposer ComposerFor(const EulerOrder& order) { return FunctionsFor(order).
 
 HalfAngleComposer HalfAngleComposerFor(const EulerOrder& order) { return FunctionsFor(order).compose_half_angles; }
 
+namespace {
+
 // SinCosDegrees of every angle, vectorised: SinCosReduced for all, then libm's value for
-// the (rare) angles of 1e9 degrees and more, as SinCosDegrees gives them. Built for AVX2 and
-// for plain x86-64, picked at load time.
-__attribute__((target_clones("avx2", "default"))) void SinCosDegreesBatch(const double* __restrict deg, size_t n,
-                                                                          double* __restrict sine,
-                                                                          double* __restrict cosine) {
+// the (rare) angles of 1e9 degrees and more, as SinCosDegrees gives them. Inlined into an
+// AVX2 build and a plain x86-64 one, picked per call (cpu_avx2.h).
+__attribute__((always_inline)) inline void SinCosDegreesLoop(const double* __restrict deg, size_t n,
+                                                             double* __restrict sine, double* __restrict cosine) {
   // Whether any angle needs libm is found in the vectorised loop: a second scalar pass over
   // every angle took a third of this function's time.
   uint64_t large = 0;
@@ -117,6 +120,23 @@ __attribute__((target_clones("avx2", "default"))) void SinCosDegreesBatch(const 
   if (large == 0) return;
   for (size_t i = 0; i < n; ++i)
     if (!(std::abs(deg[i]) < 1e9)) SinCosDegreesInline(deg[i], sine[i], cosine[i]);
+}
+
+__attribute__((target("avx2"))) void SinCosDegreesAvx2(const double* __restrict deg, size_t n,
+                                                       double* __restrict sine, double* __restrict cosine) {
+  SinCosDegreesLoop(deg, n, sine, cosine);
+}
+
+void SinCosDegreesPlain(const double* __restrict deg, size_t n, double* __restrict sine,
+                        double* __restrict cosine) {
+  SinCosDegreesLoop(deg, n, sine, cosine);
+}
+
+}  // namespace
+
+void SinCosDegreesBatch(const double* __restrict deg, size_t n, double* __restrict sine, double* __restrict cosine) {
+  if (CpuHasAvx2()) return SinCosDegreesAvx2(deg, n, sine, cosine);
+  SinCosDegreesPlain(deg, n, sine, cosine);
 }
 
 Eigen::Quaterniond ComposeEulerDegrees(const std::array<double, 3>& angles_deg, const EulerOrder& order) {

@@ -2,6 +2,8 @@
 
 #include <immintrin.h>
 
+#include "formats/cpu_avx2.h"
+
 namespace mocapfill {
 
 Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_hz, float* times) {
@@ -55,21 +57,16 @@ __attribute__((target("avx2"))) void PackListedAvx2(const Eigen::Quaterniond* q,
   PackRotationsAvx2(q, count, [joints](size_t i) { return static_cast<size_t>(joints[i]); }, previous, out, stride);
 }
 
-bool HasAvx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
-
 }  // namespace
 
 void PackRotations(const Eigen::Quaterniond* q, size_t count, Eigen::Vector4d* previous, float* out, size_t stride) {
-  if (HasAvx2()) return PackAllAvx2(q, count, previous, out, stride);
+  if (CpuHasAvx2()) return PackAllAvx2(q, count, previous, out, stride);
   for (size_t j = 0; j < count; ++j) PackRotation(q[j], previous[j], out + j * stride);
 }
 
 void PackListedRotations(const Eigen::Quaterniond* q, const uint32_t* joints, size_t count, Eigen::Vector4d* previous,
                          float* out, size_t stride) {
-  if (HasAvx2()) return PackListedAvx2(q, joints, count, previous, out, stride);
+  if (CpuHasAvx2()) return PackListedAvx2(q, joints, count, previous, out, stride);
   for (size_t i = 0; i < count; ++i) PackRotation(q[joints[i]], previous[joints[i]], out + joints[i] * stride);
 }
 
