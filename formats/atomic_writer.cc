@@ -20,18 +20,17 @@ namespace mocapfill {
 namespace {
 
 // Spares to remove if the process is interrupted. A fixed table of fixed buffers, because
-// a signal handler may only read memory that nothing allocates or frees under it.
-struct CleanupSlot {
-  std::atomic<bool> used{false};
-  std::atomic<bool> armed{false};
-  char path[4096] = {};
-};
+// a signal handler may only read memory that nothing allocates or frees under it. The flags
+// lie apart from the paths, so that looking for a free slot touches one page, not one per slot.
 constexpr int kCleanupSlots = 64;
-CleanupSlot g_cleanup[kCleanupSlots];
+constexpr size_t kCleanupPathBytes = 4096;
+std::atomic<bool> g_cleanup_used[kCleanupSlots];
+std::atomic<bool> g_cleanup_armed[kCleanupSlots];
+char g_cleanup_paths[kCleanupSlots][kCleanupPathBytes];
 
 void RemoveSparesThenDie(int signal_number) {
-  for (CleanupSlot& slot : g_cleanup)
-    if (slot.armed.load(std::memory_order_acquire)) ::unlink(slot.path);
+  for (int i = 0; i < kCleanupSlots; ++i)
+    if (g_cleanup_armed[i].load(std::memory_order_acquire)) ::unlink(g_cleanup_paths[i]);
   ::signal(signal_number, SIG_DFL);
   ::raise(signal_number);
 }
@@ -55,12 +54,12 @@ bool InstallCleanup() {
 }
 
 int ArmCleanup(const std::string& path) {
-  if (path.size() >= sizeof(CleanupSlot::path) || !InstallCleanup()) return -1;
+  if (path.size() >= kCleanupPathBytes || !InstallCleanup()) return -1;
   for (int i = 0; i < kCleanupSlots; ++i) {
     bool expected = false;
-    if (g_cleanup[i].used.compare_exchange_strong(expected, true, std::memory_order_acq_rel)) {
-      std::memcpy(g_cleanup[i].path, path.c_str(), path.size() + 1);
-      g_cleanup[i].armed.store(true, std::memory_order_release);
+    if (g_cleanup_used[i].compare_exchange_strong(expected, true, std::memory_order_acq_rel)) {
+      std::memcpy(g_cleanup_paths[i], path.c_str(), path.size() + 1);
+      g_cleanup_armed[i].store(true, std::memory_order_release);
       return i;
     }
   }
@@ -69,8 +68,8 @@ int ArmCleanup(const std::string& path) {
 
 void DisarmCleanup(int slot) {
   if (slot < 0) return;
-  g_cleanup[slot].armed.store(false, std::memory_order_release);
-  g_cleanup[slot].used.store(false, std::memory_order_release);
+  g_cleanup_armed[slot].store(false, std::memory_order_release);
+  g_cleanup_used[slot].store(false, std::memory_order_release);
 }
 
 bool IsRegularFile(const std::string& path) {
