@@ -13,7 +13,6 @@
 #include <utility>
 
 #include "formats/file_descriptor.h"
-#include "formats/file_io.h"
 
 namespace mocapfill {
 
@@ -101,12 +100,17 @@ std::string FolderOf(const std::string& path) { return std::filesystem::path(pat
 
 AtomicWriter::~AtomicWriter() { DropSpare(); }
 
-void AtomicWriter::DropSpare() {
-  if (spare_.empty()) return;
+void AtomicWriter::ForgetSpare() {
   DisarmCleanup(cleanup_slot_);
   cleanup_slot_ = -1;
-  ::unlink(spare_.c_str());  // if this fails, a stale temporary is all that is left
   spare_.clear();
+}
+
+void AtomicWriter::DropSpare() {
+  if (spare_.empty()) return;
+  const std::string spare = std::move(spare_);
+  ForgetSpare();            // disarmed before the unlink, so an interruption cannot unlink a later file of that name
+  ::unlink(spare.c_str());  // if this fails, a stale temporary is all that is left
 }
 
 void AtomicWriter::KeepSpare(std::string tmp, std::string folder) {
@@ -122,7 +126,8 @@ void AtomicWriter::KeepSpare(std::string tmp, std::string folder) {
 
 // Overwrites the spare with `parts` and moves it into place; false (spare dropped, nothing
 // at `path` changed) when the spare cannot serve.
-bool AtomicWriter::WriteOverSpare(const std::string& path, const std::string& folder,
+bool AtomicWriter::WriteOverSpare(const std::string& path,
+                                  const std::string& folder,
                                   std::initializer_list<std::string_view> parts) {
   if (spare_.empty() || folder != spare_folder_ || new_file_mode_ == 0) return false;
   FileDescriptor fd(::open(spare_.c_str(), O_WRONLY | O_CLOEXEC | O_NOFOLLOW));
@@ -146,9 +151,7 @@ bool AtomicWriter::WriteOverSpare(const std::string& path, const std::string& fo
   }
   if (SwapIntoPlace(spare_, path)) return true;  // the replaced file is the spare now
   if (std::rename(spare_.c_str(), path.c_str()) == 0) {
-    DisarmCleanup(cleanup_slot_);
-    cleanup_slot_ = -1;
-    spare_.clear();
+    ForgetSpare();  // it is the output now
     return true;
   }
   DropSpare();

@@ -18,8 +18,8 @@ namespace mocapfill {
 // buffer lookup each: re-converting the 174 Bandai clips spent a third of its time there
 // and in the folder lock held meanwhile. A spare is reused only while no other name links
 // to it, no process has it open (or mapped) and this user owns it, and it takes the mode a
-// new file would get. The writer's
-// destructor, and SIGINT, SIGTERM or SIGHUP meanwhile, remove the spare.
+// new file would get. The writer's destructor, and SIGINT, SIGTERM or SIGHUP meanwhile,
+// remove the spare.
 // One writer per thread; writers on several threads may share a folder.
 class AtomicWriter {
  public:
@@ -32,14 +32,26 @@ class AtomicWriter {
   Status Write(const std::string& path, std::initializer_list<std::string_view> parts);
 
  private:
-  bool WriteOverSpare(const std::string& path, const std::string& folder, std::initializer_list<std::string_view> parts);
+  bool WriteOverSpare(const std::string& path,
+                      const std::string& folder,
+                      std::initializer_list<std::string_view> parts);
   void KeepSpare(std::string tmp, std::string folder);
-  void DropSpare();
+  void ForgetSpare();  // no spare any more, the file left where it is
+  void DropSpare();    // the spare unlinked
 
   std::string spare_;  // the kept file's path, "" when there is none
   std::string spare_folder_;
   int cleanup_slot_ = -1;
   unsigned new_file_mode_ = 0;  // what a newly created file got, umask applied (0: none made yet)
 };
+
+// One output written through a writer of its own: `bytes` to a temporary file beside
+// `path`, swapped or renamed into place, the replaced file removed, so a crash or error
+// never leaves a partial file. Fails with kIoError naming the path.
+Status WriteFileAtomic(const std::string& path, const std::string& bytes);
+
+// WriteFileAtomic of the concatenation of `parts`, without joining them in memory first
+// (a .glb's binary chunk is most of the file).
+Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts);
 
 }  // namespace mocapfill

@@ -1,7 +1,5 @@
 #include "formats/file_io.h"
 
-#include "formats/file_descriptor.h"
-
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -15,6 +13,8 @@
 #include <filesystem>
 #include <type_traits>
 #include <utility>
+
+#include "formats/file_descriptor.h"
 
 namespace mocapfill {
 
@@ -84,7 +84,6 @@ Result<Bytes> ReadWhole(const std::string& path) {
   return ReadOpened<Bytes>(fd, info, path);
 }
 
-
 }  // namespace
 
 Result<std::string> ReadFileBytes(const std::string& path) { return ReadWhole<std::string>(path); }
@@ -95,7 +94,8 @@ Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes) {
   FileDescriptor fd(-1);
   ASSIGN_OR_RETURN(const struct stat info, OpenForReading(path, fd));
   if (S_ISREG(info.st_mode) && info.st_size > 0 && static_cast<size_t>(info.st_size) >= map_min_bytes)
-    if (std::optional<FileText> text = FileText::Map(fd.get(), static_cast<size_t>(info.st_size))) return std::move(*text);
+    if (std::optional<FileText> text = FileText::Map(fd.get(), static_cast<size_t>(info.st_size)))
+      return std::move(*text);
   ASSIGN_OR_RETURN(LargeBuffer bytes, ReadOpened<LargeBuffer>(fd, info, path));
   return FileText(std::move(bytes));
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "formats/atomic_writer.h"
+#include "formats/atomic_writer.h"  // WriteFileAtomic, WriteFileAtomicParts
 #include "formats/file_text.h"
 #include "formats/large_buffer.h"
 #include "processing/core/status.h"
@@ -28,14 +28,6 @@ inline constexpr size_t kMapFileMinBytes = size_t{1} << 20;
 // read-only (file_text.h: check intact() after use), anything else, or a file that cannot
 // be mapped, read as ReadFileToBuffer reads it. Fails with kIoError naming the path.
 Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes = kMapFileMinBytes);
-
-// Writes `bytes` to a temporary file beside `path`, then renames it over `path`, so a
-// crash or error never leaves a partial file. Fails with kIoError naming the path.
-Status WriteFileAtomic(const std::string& path, const std::string& bytes);
-
-// WriteFileAtomic of the concatenation of `parts`, without joining them in memory first
-// (a .glb's binary chunk is most of the file).
-Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts);
 
 // Asks the kernel to map the whole pages inside [data, data + bytes) for writing now, in
 // one call, instead of one page fault per 4 KiB page on first touch (a CMU clip's arrays

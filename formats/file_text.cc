@@ -42,8 +42,8 @@ void OnBusError(int, siginfo_t* info, void*) {
     const uintptr_t end = slot.end.load(std::memory_order_relaxed);
     if (address < begin || address >= end) continue;
     const uintptr_t page = address & ~(PageBytes() - 1);
-    void* zeros = ::mmap(reinterpret_cast<void*>(page), end - page, PROT_READ,
-                         MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0);
+    void* zeros =
+        ::mmap(reinterpret_cast<void*>(page), end - page, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0);
     if (zeros == MAP_FAILED) break;
     slot.lost.store(true, std::memory_order_release);
     return;
@@ -122,11 +122,10 @@ void FileText::Release() {
   if (slot_ < 0) return;
   // The slot is given up first: the guard must not answer for an address range that is
   // about to be unmapped and may be reused by anything.
-  g_slots[slot_].used.store(false, std::memory_order_release);
-  ::munmap(const_cast<char*>(mapping_), mapping_bytes_);
-  mapping_ = nullptr;
-  mapping_bytes_ = 0;
-  slot_ = -1;
+  char* const mapping = const_cast<char*>(mapping_);
+  const size_t bytes = mapping_bytes_;
+  LeaveToExit();
+  ::munmap(mapping, bytes);
 }
 
 void FileText::LeaveToExit() {

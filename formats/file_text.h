@@ -45,7 +45,7 @@ class FileText {
  private:
   void Release();
 
-  LargeBuffer buffer_;  // when read
+  LargeBuffer buffer_;             // when read
   const char* mapping_ = nullptr;  // when mapped: the mapping, its length, its guard slot
   size_t mapping_bytes_ = 0;
   int slot_ = -1;

@@ -1,10 +1,10 @@
 #include "formats/motion_io.h"
 
 #include "formats/assimp/assimp_loader.h"
+#include "formats/atomic_writer.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/bvh/bvh_writer.h"
 #include "formats/bvh_glb/bvh_to_glb.h"
-#include "formats/atomic_writer.h"
 #include "formats/file_io.h"
 #include "formats/gltf/gltf_reader.h"
 #include "formats/gltf/gltf_writer.h"

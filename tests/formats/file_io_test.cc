@@ -32,6 +32,15 @@ std::string Pattern(size_t bytes) {
   return s;
 }
 
+// A fifo at `fifo`, and a thread that writes `bytes` into it once a reader opens it.
+std::thread FeedFifo(const std::string& fifo, const std::string& bytes) {
+  EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << fifo;
+  return std::thread([fifo, &bytes] {
+    std::ofstream out(fifo, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
+}
+
 TEST(LargeBuffer, HoldsWhatIsWrittenBelowAndAboveItsOwnMappingSize) {
   for (size_t bytes : {size_t{0}, size_t{1}, size_t{4096}, (size_t{1} << 20) - 1, size_t{1} << 20,
                        (size_t{5} << 20) + 123}) {
@@ -140,12 +149,8 @@ TEST(ReadFileToBuffer, ReadsRegularFilesWhole) {
 TEST(ReadFileToBuffer, ReadsPipesToTheirEnd) {
   const std::string dir = testing::ScratchDir("read_file_to_buffer_pipe");
   const std::string fifo = dir + "/pipe";
-  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const std::string pattern = Pattern(700000);
-  std::thread writer([&] {
-    std::ofstream out(fifo, std::ios::binary);
-    out.write(pattern.data(), static_cast<std::streamsize>(pattern.size()));
-  });
+  std::thread writer = FeedFifo(fifo, pattern);
   const Result<LargeBuffer> read = ReadFileToBuffer(fifo);
   writer.join();
   ASSERT_TRUE(read.ok()) << read.status().message();
@@ -179,12 +184,8 @@ TEST(ReadFileText, MapsLargeRegularFilesAndReadsTheRest) {
   }
   // A pipe is read, whatever the threshold.
   const std::string fifo = dir + "/pipe";
-  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const std::string pattern = Pattern(300000);
-  std::thread writer([&] {
-    std::ofstream out(fifo, std::ios::binary);
-    out.write(pattern.data(), static_cast<std::streamsize>(pattern.size()));
-  });
+  std::thread writer = FeedFifo(fifo, pattern);
   const Result<FileText> piped = ReadFileText(fifo, 1);
   writer.join();
   ASSERT_TRUE(piped.ok());
