@@ -1,7 +1,6 @@
 #include "formats/file_io.h"
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -98,20 +97,6 @@ Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes) {
       return std::move(*text);
   ASSIGN_OR_RETURN(LargeBuffer bytes, ReadOpened<LargeBuffer>(fd, info, path));
   return FileText(std::move(bytes));
-}
-
-void PrefaultForWrite(void* data, size_t bytes) {
-#ifdef MADV_POPULATE_WRITE
-  static const size_t kPage = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
-  // Below a few pages the call costs more than the faults it saves.
-  if (bytes < 16 * kPage) return;
-  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kPage - 1) / kPage * kPage;
-  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) / kPage * kPage;
-  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
-#else
-  (void)data;
-  (void)bytes;
-#endif
 }
 
 bool IsSameFile(const std::string& a, const std::string& b) {

@@ -23,17 +23,18 @@ Result<LargeBuffer> ReadFileToBuffer(const std::string& path);
 
 // Regular files of at least this size are mapped by ReadFileText.
 inline constexpr size_t kMapFileMinBytes = size_t{1} << 20;
+// The same for an input the process leaves mapped until it exits (ImportOptions::
+// leave_input_to_exit): no munmap follows, and mapping costs one call where a read costs a
+// page fault per 4 KiB of the fresh buffer it fills. A Bandai clip converted from the command
+// line took 0.92 of its time mapped (174 clips, paired). Many inputs in one process stay
+// at kMapFileMinBytes: there every munmap flushes the other workers' TLBs, and mapping the
+// small Bandai clips made a batch 1.48 times slower.
+inline constexpr size_t kMapLeftInputMinBytes = size_t{16} << 10;
 
 // The file's bytes for parsing: a regular file of at least `map_min_bytes` mapped
 // read-only (file_text.h: check intact() after use), anything else, or a file that cannot
 // be mapped, read as ReadFileToBuffer reads it. Fails with kIoError naming the path.
 Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes = kMapFileMinBytes);
-
-// Asks the kernel to map the whole pages inside [data, data + bytes) for writing now, in
-// one call, instead of one page fault per 4 KiB page on first touch (a CMU clip's arrays
-// are 2,000 pages; in a VM each fault is an exit). Only worth it for buffers that are
-// about to be written in full. Does nothing where the kernel lacks MADV_POPULATE_WRITE.
-void PrefaultForWrite(void* data, size_t bytes);
 
 // True when both paths name the same existing file (same device and inode).
 bool IsSameFile(const std::string& a, const std::string& b);

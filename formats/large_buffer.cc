@@ -1,10 +1,13 @@
 #include "formats/large_buffer.h"
 
+#include <malloc.h>
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <new>
 #include <utility>
 
@@ -28,6 +31,9 @@ LargeBuffer::LargeBuffer(size_t bytes) : size_(bytes), capacity_(bytes) {
   if (bytes < kOwnMappingMinBytes) {
     data_ = static_cast<unsigned char*>(std::malloc(bytes > 0 ? bytes : 1));
     if (data_ == nullptr) throw std::bad_alloc();
+    // From 128 KiB malloc maps a fresh block, and a read into one faulted once per page:
+    // 42 times for a Bandai clip's 160 KB text, 0.5 ms here.
+    PrefaultForWrite(data_, bytes);
     return;
   }
   // Over-map by one huge page, then trim to a 2 MiB-aligned span, so that every 2 MiB of
@@ -89,6 +95,44 @@ void LargeBuffer::Release() {
   data_ = nullptr;
   mapping_ = nullptr;
   size_ = capacity_ = mapping_bytes_ = 0;
+}
+
+void PrefaultForWrite(void* data, size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  static const size_t kPage = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
+  // Below a few pages the call costs more than the faults it saves.
+  if (bytes < 16 * kPage) return;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kPage - 1) / kPage * kPage;
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) / kPage * kPage;
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+void ReserveMappedHeap(size_t bytes) {
+#if defined(MADV_POPULATE_WRITE) && !defined(__SANITIZE_ADDRESS__)
+  if (::mallopt(M_TOP_PAD, static_cast<int>(bytes)) == 0) return;
+  // Blocks below the mmap threshold come from the top of the heap until it runs out; the
+  // next one grows the heap by itself plus the pad. Freed, they rejoin the top.
+  constexpr size_t kBlock = size_t{64} << 10;
+  const void* const before = ::sbrk(0);
+  void* blocks[16];
+  size_t taken = 0;
+  while (taken < std::size(blocks) && ::sbrk(0) == before) {
+    blocks[taken] = std::malloc(kBlock);
+    if (blocks[taken] == nullptr) break;
+    ++taken;
+  }
+  for (size_t i = 0; i < taken; ++i) std::free(blocks[i]);
+  // The whole heap, from its start: pages already in use cost the call next to nothing.
+  const uintptr_t top = reinterpret_cast<uintptr_t>(::sbrk(0));
+  const size_t heap = ::mallinfo2().arena;
+  if (heap > 0 && heap <= top) PrefaultForWrite(reinterpret_cast<void*>(top - heap), heap);
+#else
+  (void)bytes;
+#endif
 }
 
 void LargeBuffer::resize(size_t bytes) {

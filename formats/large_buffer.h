@@ -14,7 +14,8 @@ namespace mocapfill {
 class LargeBuffer {
  public:
   LargeBuffer() = default;
-  // `bytes` bytes of unspecified content. Throws std::bad_alloc when memory is short.
+  // `bytes` bytes of unspecified content, already mapped for writing (PrefaultForWrite):
+  // the buffer is made to be filled. Throws std::bad_alloc when memory is short.
   explicit LargeBuffer(size_t bytes);
   LargeBuffer(LargeBuffer&& other) noexcept;
   LargeBuffer& operator=(LargeBuffer&& other) noexcept;
@@ -41,5 +42,19 @@ class LargeBuffer {
   void* mapping_ = nullptr;  // when mapped on its own: the mapping, and its length
   size_t mapping_bytes_ = 0;
 };
+
+// Asks the kernel to map the whole pages inside [data, data + bytes) for writing now, in
+// one call, instead of one page fault per 4 KiB page on first touch (a CMU clip's arrays
+// are 2,000 pages; in a VM each fault is an exit, 3-12 us here against under 1 us a page
+// for the call). Only worth it for buffers that are about to be written in full. Does
+// nothing where the kernel lacks MADV_POPULATE_WRITE.
+void PrefaultForWrite(void* data, size_t bytes);
+
+// Makes malloc keep `bytes` free at the top of its heap (M_TOP_PAD: every growth adds that
+// much, and trimming leaves it), grows the heap that far now and maps all of it for writing
+// in one call. For a short process whose small allocations would otherwise fault in a fresh
+// heap page at a time: converting a Bandai clip took 44 heap faults fewer, 0.97 of its time.
+// Does nothing under AddressSanitizer (its own heap) or without MADV_POPULATE_WRITE.
+void ReserveMappedHeap(size_t bytes);
 
 }  // namespace mocapfill

@@ -20,6 +20,10 @@ Status WriteOut(AtomicWriter* writer, const std::string& path, std::initializer_
   return WriteFileAtomicParts(path, parts);
 }
 
+size_t MapMinBytes(const ImportOptions& options) {
+  return options.leave_input_to_exit ? kMapLeftInputMinBytes : kMapFileMinBytes;
+}
+
 bool IsAssimpExtension(const std::string& ext) {
   for (const char* e : kAssimpExtensions)
     if (ext == e) return true;
@@ -46,7 +50,7 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
   if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
     return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
   if (ext == ".bvh") {
-    ASSIGN_OR_RETURN(FileText text, ReadFileText(path));
+    ASSIGN_OR_RETURN(FileText text, ReadFileText(path, MapMinBytes(options)));
     Result<Scene> scene = ReadBvh(text.view(), path, options);
     if (text.intact()) {
       if (options.leave_input_to_exit) text.LeaveToExit();
@@ -84,7 +88,7 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
                           const ExportOptions& export_options, AtomicWriter* writer) {
   ConvertResult result;
   if (LowerExtension(input) == ".bvh" && LowerExtension(output) == ".glb") {
-    Result<FileText> text = ReadFileText(input);
+    Result<FileText> text = ReadFileText(input, MapMinBytes(import_options));
     if (!text.ok()) {
       result.status = text.status();
       return result;

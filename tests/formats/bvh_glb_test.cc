@@ -149,6 +149,41 @@ TEST(BvhGlbStream, MappedInputEndingOnAPageBoundaryConvertsAsTheClipPath) {
   EXPECT_EQ(imported->clips.at(0).num_frames, ReadBvh(text, input, {})->clips.at(0).num_frames);
 }
 
+// A single conversion leaves its input to the process's exit and so maps inputs from
+// kMapLeftInputMinBytes (formats/file_io.h): every shipped BVH converts to the same bytes
+// that way as read into memory, and as through the clip, one ending on a page boundary too.
+TEST(BvhGlbStream, InputsLeftToExitAreMappedAndConvertAsTheClipPath) {
+  const std::string dir = testing::TestOutputDir("bvh_glb_left_to_exit");
+  ImportOptions left;
+  left.leave_input_to_exit = true;
+  std::vector<std::string> inputs;
+  for (const auto& entry : fs::directory_iterator(FixturePath("bvh"))) inputs.push_back(entry.path().string());
+  std::string page_text = ReadText(FixturePath("bvh/cmu_crlf.bvh"));
+  page_text.append((page_text.size() + 4096) / 4096 * 4096 - page_text.size() - 1, ' ');
+  page_text += '\n';
+  ASSERT_EQ(page_text.size() % 4096, 0u);
+  inputs.push_back(dir + "/page_end.bvh");
+  ASSERT_TRUE(WriteFileAtomic(inputs.back(), page_text).ok());
+  size_t mapped = 0, large_enough = 0;
+  for (const std::string& input : inputs) {
+    const std::string name = fs::path(input).stem().string();
+    const Result<FileText> text = ReadFileText(input, kMapLeftInputMinBytes);
+    ASSERT_TRUE(text.ok());
+    mapped += text->mapped();
+    large_enough += fs::file_size(input) >= kMapLeftInputMinBytes;
+    const ConvertResult read = ConvertFile(input, dir + "/" + name + "_read.glb", {}, {});
+    const ConvertResult left_mapped = ConvertFile(input, dir + "/" + name + "_left.glb", left, {});
+    ASSERT_TRUE(read.status.ok() && left_mapped.status.ok()) << input;
+    EXPECT_EQ(left_mapped.warnings, read.warnings) << input;
+    EXPECT_EQ(ReadText(dir + "/" + name + "_left.glb"), ReadText(dir + "/" + name + "_read.glb")) << input;
+    const Result<std::string> expected = ThroughTheClip(ReadText(input), input);
+    ASSERT_TRUE(expected.ok());
+    EXPECT_EQ(ReadText(dir + "/" + name + "_left.glb"), *expected) << input;
+  }
+  EXPECT_EQ(mapped, large_enough);
+  EXPECT_GE(mapped, 6u);
+}
+
 // Whatever the clip path would warn about or reject, and Z-up sources, are left to it, so
 // that ConvertFile reports and writes exactly what ImportFile and ExportFile do.
 TEST(BvhGlbStream, AnythingButAPlainImportIsLeftToTheClipPath) {

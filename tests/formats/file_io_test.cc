@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -51,6 +52,45 @@ TEST(LargeBuffer, HoldsWhatIsWrittenBelowAndAboveItsOwnMappingSize) {
     std::memcpy(buffer.data(), pattern.data(), bytes);
     EXPECT_EQ(buffer.view(), pattern) << bytes;
   }
+}
+
+// Minor page faults this process has taken so far.
+long MinorFaults() {
+  struct rusage usage {};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
+// A buffer below its own mapping size comes from malloc, which maps a fresh block from
+// 128 KiB: its pages are mapped when it is made, not faulted in one by one as it is filled.
+TEST(LargeBuffer, IsMappedForWritingWhenMade) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer's allocator";
+#endif
+  constexpr size_t kBytes = size_t{640} << 10;  // 160 pages
+  LargeBuffer buffer(kBytes);
+  const long before = MinorFaults();
+  std::memset(buffer.data(), 7, kBytes);
+  EXPECT_LT(MinorFaults() - before, 8) << "pages faulted in while filling a 640 KiB buffer";
+}
+
+// After ReserveMappedHeap, small allocations that take the heap's top are already mapped:
+// filling 600 KB of 8 KB blocks takes (almost) no page faults, where a heap grown on
+// demand takes one per 4 KiB page (150 here).
+TEST(ReserveMappedHeap, SmallAllocationsFindTheirPagesMapped) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer keeps its own heap";
+#endif
+  ReserveMappedHeap(size_t{1} << 20);
+  std::vector<void*> blocks;
+  const long before = MinorFaults();
+  for (int i = 0; i < 75; ++i) {
+    blocks.push_back(std::malloc(8 << 10));
+    std::memset(blocks.back(), 1, 8 << 10);
+  }
+  const long faults = MinorFaults() - before;
+  for (void* block : blocks) std::free(block);
+  EXPECT_LT(faults, 8) << "page faults while filling 600 KB of new heap blocks";
 }
 
 // The kernel's view of the mapping that holds `address` (/proc/self/smaps): its
@@ -195,6 +235,23 @@ TEST(ReadFileText, MapsLargeRegularFilesAndReadsTheRest) {
   EXPECT_EQ(missing.status().code(), ErrorCode::kIoError);
   EXPECT_NE(missing.status().message().find(dir + "/missing.bvh: cannot open"), std::string::npos);
   EXPECT_NE(ReadFileText(dir).status().message().find("is a directory"), std::string::npos);
+}
+
+// The threshold an input left to the process's exit is mapped from (file_io.h): the text
+// is the file's whatever the size, a page-multiple size included.
+TEST(ReadFileText, MapsFromTheThresholdItIsGiven) {
+  const std::string dir = testing::ScratchDir("read_file_text_threshold");
+  static_assert(kMapLeftInputMinBytes < kMapFileMinBytes);
+  for (size_t bytes : {size_t{17}, kMapLeftInputMinBytes - 1, kMapLeftInputMinBytes, size_t{20480}, size_t{300001}}) {
+    const std::string path = dir + "/f" + std::to_string(bytes);
+    const std::string pattern = Pattern(bytes);
+    ASSERT_TRUE(WriteFileAtomic(path, pattern).ok());
+    const Result<FileText> text = ReadFileText(path, kMapLeftInputMinBytes);
+    ASSERT_TRUE(text.ok()) << text.status().message();
+    EXPECT_EQ(text->mapped(), bytes >= kMapLeftInputMinBytes) << bytes;
+    EXPECT_EQ(text->view(), pattern) << bytes;
+    EXPECT_FALSE(ReadFileText(path)->mapped()) << bytes;  // below kMapFileMinBytes: read
+  }
 }
 
 // A text left to the process's exit is empty to its owner, and its pages stay mapped
