@@ -68,12 +68,12 @@ struct InputSet {
 
 // Converts one file; returns the exit code and prints any error.
 int ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import, const InputSet& all_inputs,
-               AtomicWriter& writer) {
+               AtomicWriter* writer) {
   if (all_inputs.Contains(job.output)) {
     PrintError(job.output + ": refusing to overwrite input file");
     return kExitOutput;
   }
-  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options, &writer);
+  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options, writer);
   for (const std::string& warning : converted.warnings) PrintWarning(job.input + ": " + warning);
   if (!converted.status.ok()) {
     PrintError(converted.status.message());
@@ -117,12 +117,16 @@ int RunConvert(const ConvertArgs& args) {
   }
   const std::vector<Job>& jobs = *planned;
   std::vector<int> codes(jobs.size(), kExitOk);
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const size_t workers = std::min<size_t>(jobs.size(), args.jobs > 0 ? args.jobs : hardware);
+  size_t workers = 1;
+  if (jobs.size() > 1) {  // one job needs no count of the CPUs, which is a file to open and read
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    workers = std::min<size_t>(jobs.size(), args.jobs > 0 ? args.jobs : hardware);
+  }
   // Files spread over the workers already keep the cores busy: each is read on one thread.
   ImportOptions import = args.import;
   if (workers > 1) import.threads = 1;
-  // One file: the process ends right after it, and its exit unmaps the input faster.
+  // One file: the process ends right after it, and its exit unmaps the input faster (so
+  // smaller inputs are mapped too, formats/file_io.h).
   import.leave_input_to_exit = jobs.size() == 1;
   // Many files one after another: freed buffers stay with the process for the next file
   // instead of going back to the kernel and being faulted in afresh (page faults for the
@@ -135,9 +139,13 @@ int RunConvert(const ConvertArgs& args) {
   const InputSet inputs(args.inputs);
   std::atomic<size_t> next{0};
   auto work = [&] {
-    AtomicWriter writer;  // this worker's: re-used replaced outputs (formats/atomic_writer.h)
+    // This worker's: re-used replaced outputs (formats/atomic_writer.h). A kept file only
+    // pays off for a next output; one job removes the file it replaced at once, with no
+    // signal handlers installed to clean up after it.
+    AtomicWriter writer;
+    AtomicWriter* const reuse = jobs.size() > 1 ? &writer : nullptr;
     for (size_t i = next++; i < jobs.size(); i = next++) {
-      codes[i] = ConvertOne(jobs[i], args, import, inputs, writer);
+      codes[i] = ConvertOne(jobs[i], args, import, inputs, reuse);
       progress.Advance();
     }
   };
