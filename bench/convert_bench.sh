@@ -93,4 +93,17 @@ for clip in "$data"/cmu/*.bvh; do
   row "cmu $name, mocapfill" "$best_mf" "$c_mb" "$c_frames" "$(times "$(echo "$best_as / $best_mf" | bc -l)")" \
     "$(times "$(median "${c_pairs[@]}")")"
 done
+# The ratios move with the machine: in a slow phase (page faults and process starts several
+# times dearer) Assimp, which takes ~1,100 page faults for a Bandai clip against our ~70,
+# slows down more than mocapfill does. Each side's cost of a process that does nothing
+# useful, measured in turns, says which phase the figures above were taken in.
+fl_mf=(); fl_as=()
+for ((i = 0; i < 10 * runs; i++)); do
+  tick; t0=$t; assimp version >/dev/null 2>&1
+  tick; t1=$t; "$exe" convert "$tmp/missing.bvh" "$tmp/missing.glb" >/dev/null 2>&1 || true
+  tick; t2=$t
+  fl_as+=("$(echo "$t1 - $t0" | bc -l)"); fl_mf+=("$(echo "$t2 - $t1" | bc -l)")
+done
+printf "process floor (median): mocapfill failing on a missing input %.2f ms, assimp version %.2f ms\n" \
+  "$(echo "$(median "${fl_mf[@]}") * 1000" | bc -l)" "$(echo "$(median "${fl_as[@]}") * 1000" | bc -l)"
 echo "targets: >= 5x per file over the whole set, >= 20x on each CMU clip, >= 50x in batch mode"
