@@ -14,8 +14,9 @@ namespace mocapfill {
 class LargeBuffer {
  public:
   LargeBuffer() = default;
-  // `bytes` bytes of unspecified content, already mapped for writing (PrefaultForWrite):
-  // the buffer is made to be filled. Throws std::bad_alloc when memory is short.
+  // `bytes` bytes of unspecified content. The buffer is made to be filled, so its small
+  // pages are mapped for writing at once (PrefaultForWrite); a huge page is faulted in whole
+  // at its first touch. Throws std::bad_alloc when memory is short.
   explicit LargeBuffer(size_t bytes);
   LargeBuffer(LargeBuffer&& other) noexcept;
   LargeBuffer& operator=(LargeBuffer&& other) noexcept;
