@@ -117,8 +117,9 @@ int RunConvert(const ConvertArgs& args) {
   }
   const std::vector<Job>& jobs = *planned;
   std::vector<int> codes(jobs.size(), kExitOk);
+  const bool one_job = jobs.size() == 1;
   size_t workers = 1;
-  if (jobs.size() > 1) {  // one job needs no count of the CPUs, which is a file to open and read
+  if (!one_job) {  // one job needs no count of the CPUs, which is a file to open and read
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     workers = std::min<size_t>(jobs.size(), args.jobs > 0 ? args.jobs : hardware);
   }
@@ -127,11 +128,11 @@ int RunConvert(const ConvertArgs& args) {
   if (workers > 1) import.threads = 1;
   // One file: the process ends right after it, and its exit unmaps the input faster (so
   // smaller inputs are mapped too, formats/file_io.h).
-  import.leave_input_to_exit = jobs.size() == 1;
+  import.leave_input_to_exit = one_job;
   // Many files one after another: freed buffers stay with the process for the next file
   // instead of going back to the kernel and being faulted in afresh (page faults for the
   // 174 Bandai clips ~1,300 -> ~730).
-  if (jobs.size() > 1) {
+  if (!one_job) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
   }
@@ -143,7 +144,7 @@ int RunConvert(const ConvertArgs& args) {
     // pays off for a next output; one job removes the file it replaced at once, with no
     // signal handlers installed to clean up after it.
     AtomicWriter writer;
-    AtomicWriter* const reuse = jobs.size() > 1 ? &writer : nullptr;
+    AtomicWriter* const reuse = one_job ? nullptr : &writer;
     for (size_t i = next++; i < jobs.size(); i = next++) {
       codes[i] = ConvertOne(jobs[i], args, import, inputs, reuse);
       progress.Advance();
