@@ -7,6 +7,7 @@
 #include "formats/file_io.h"
 #include "formats/mfdb/mfdb_file.h"
 #include "formats/mfdb/motion_folder.h"
+#include "processing/retargeting/retarget_scene.h"
 
 #ifndef MOCAPFILL_SOURCE_DEFAULT_DB
 #define MOCAPFILL_SOURCE_DEFAULT_DB ""
@@ -44,6 +45,18 @@ Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& p
   return map;
 }
 
+// Same joint names with the same parents, in any order (what the builder accepts as is).
+bool SameJointSet(const Skeleton& a, const Skeleton& b) {
+  if (a.num_joints() != b.num_joints()) return false;
+  for (int j = 0; j < b.num_joints(); ++j) {
+    const std::optional<int> in_a = a.Find(b.name(j));
+    if (!in_a) return false;
+    const int pa = a.parent(*in_a), pb = b.parent(j);
+    if ((pa == kNoParent) != (pb == kNoParent) || (pa != kNoParent && a.name(pa) != b.name(pb))) return false;
+  }
+  return true;
+}
+
 Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& paths, const DatabaseBuildFlags& flags) {
   ASSIGN_OR_RETURN(const std::vector<std::string> files, ListMotionFiles(paths));
   DatabaseOptions options;
@@ -60,8 +73,32 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
     Progress progress("importing", files.size());
     ASSIGN_OR_RETURN(scenes, ImportMotionFiles(files, flags.import, flags.threads, [&] { progress.Advance(); }));
   }
+  // The database's rig as a retargeting target: its skeleton and first frame (for a rest pose
+  // where the zero pose does not stand), kept before the builder takes the clips.
+  Scene database_rig;
+  if (!scenes.empty()) {
+    database_rig.skeleton = scenes.front().scene.skeleton;
+    if (!scenes.front().scene.clips.empty()) {
+      MotionClip first = scenes.front().scene.clips.front();
+      first.num_frames = 1;
+      first.rotations.resize(first.num_joints);
+      first.translations.resize(first.num_joints);
+      database_rig.clips.push_back(std::move(first));
+    }
+  }
   for (LabeledScene& s : scenes) {
     const std::string& file = s.labels["file"];
+    // A clip of another rig is retargeted onto the first file's rig (through the canonical
+    // humanoid), unless a joint-name map was given to make the rigs match by name.
+    if (flags.map_path.empty() && &s != &scenes.front() && !SameJointSet(scenes.front().scene.skeleton, s.scene.skeleton)) {
+      Result<Scene> onto = RetargetScene(s.scene, database_rig);
+      if (!onto.ok())
+        return onto.status().WithContext(file + ": its rig differs from the database's (" + scenes.front().labels["file"] +
+                                         ") and could not be retargeted onto it");
+      s.scene.skeleton = onto->skeleton;
+      s.scene.clips = std::move(onto->clips);
+      s.labels["retargeted_from_rig"] = s.labels["file"];
+    }
     for (MotionClip& clip : s.scene.clips) {
       // One clip per file is the rule (BVH); files with several animations name each.
       clip.name = s.scene.clips.size() == 1 ? s.labels["name"] : s.labels["name"] + ":" + clip.name;

@@ -12,6 +12,7 @@
 // another 0.6 ms of a 4 ms BVH conversion), so Assimp inputs (FBX...), which need the
 // dynamically loaded Assimp plug-in, go to mocapfill-full as well (front_end_assimp.cc).
 #include <string>
+#include <string_view>
 
 #include "converter/verb_dispatch.h"
 #include "formats/large_buffer.h"
@@ -35,10 +36,17 @@ bool NamesAssimpInput(int argc, char** argv) {
   return false;
 }
 
+// Retargeting (convert --retarget) is no plain conversion; mocapfill-full runs it.
+bool AsksToRetarget(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]).starts_with("--retarget")) return true;
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (NamedVerb(argc, argv, kFormatVerbs) != nullptr && !NamesAssimpInput(argc, argv)) {
+  if (NamedVerb(argc, argv, kFormatVerbs) != nullptr && !NamesAssimpInput(argc, argv) && !AsksToRetarget(argc, argv)) {
     mocapfill::ReserveMappedHeap(kStartHeapBytes);
     return RunCommandLine(argc, argv, kFormatVerbs);
   }

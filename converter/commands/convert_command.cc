@@ -21,6 +21,7 @@
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/spread_thread.h"
+#include "processing/retargeting/retarget_scene.h"
 
 namespace mocapfill::cli {
 
@@ -36,6 +37,14 @@ struct ConvertArgs {
   int jobs = 0;
   ImportOptions import;
   ExportOptions export_options;
+  std::string retarget;       // --retarget: a character whose rig the motion is put onto
+  std::string retarget_rest = "auto";
+};
+
+// The character of --retarget, read once for every input.
+struct RetargetTarget {
+  Scene character;
+  RigOptions rig;
 };
 
 struct Job {
@@ -67,12 +76,37 @@ struct InputSet {
 };
 
 // Converts one file; returns the exit code and prints any error.
+// Imports, puts the motion onto the character's rig, exports.
+int RetargetOne(const Job& job, const ConvertArgs& args, const ImportOptions& import, const RetargetTarget& target,
+                AtomicWriter* writer) {
+  Result<Scene> motion = ImportFile(job.input, import);
+  if (!motion.ok()) {
+    PrintError(motion.status().message());
+    return ExitCodeFor(motion.status(), Stage::kInput);
+  }
+  for (const std::string& warning : motion->warnings) PrintWarning(job.input + ": " + warning);
+  Result<Scene> retargeted = RetargetScene(*motion, target.character, {}, target.rig);
+  if (!retargeted.ok()) {
+    const Status status = retargeted.status().WithContext(job.input + " onto " + args.retarget);
+    PrintError(status.message());
+    return ExitCodeFor(status, Stage::kInput);
+  }
+  retargeted->source = motion->source;  // units and frame timing as the motion had them
+  const Status written = ExportFile(*retargeted, job.output, args.export_options, writer);
+  if (!written.ok()) {
+    PrintError(written.message());
+    return ExitCodeFor(written, Stage::kOutput);
+  }
+  return kExitOk;
+}
+
 int ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import, const InputSet& all_inputs,
-               AtomicWriter* writer) {
+               const RetargetTarget* target, AtomicWriter* writer) {
   if (all_inputs.Contains(job.output)) {
     PrintError(job.output + ": refusing to overwrite input file");
     return kExitOutput;
   }
+  if (target) return RetargetOne(job, args, import, *target, writer);
   const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options, writer);
   for (const std::string& warning : converted.warnings) PrintWarning(job.input + ": " + warning);
   if (!converted.status.ok()) {
@@ -136,8 +170,24 @@ int RunConvert(const ConvertArgs& args) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
   }
+  std::optional<RetargetTarget> target;
+  std::vector<std::string> read_files = args.inputs;
+  if (!args.retarget.empty()) {
+    Result<Scene> character = ImportFile(args.retarget, args.import);
+    if (!character.ok()) {
+      PrintError(character.status().message());
+      return ExitCodeFor(character.status(), Stage::kInput);
+    }
+    Result<RestSource> rest = ParseRestSource(args.retarget_rest);
+    if (!rest.ok()) {
+      PrintError(rest.status().message());
+      return kExitUsage;
+    }
+    target = RetargetTarget{std::move(*character), RigOptions{{}, *rest}};
+    read_files.push_back(args.retarget);
+  }
   Progress progress("converting", jobs.size());
-  const InputSet inputs(args.inputs);
+  const InputSet inputs(read_files);
   std::atomic<size_t> next{0};
   auto work = [&] {
     // This worker's: re-used replaced outputs (formats/atomic_writer.h). A kept file only
@@ -146,7 +196,7 @@ int RunConvert(const ConvertArgs& args) {
     AtomicWriter writer;
     AtomicWriter* const reuse = one_job ? nullptr : &writer;
     for (size_t i = next++; i < jobs.size(); i = next++) {
-      codes[i] = ConvertOne(jobs[i], args, import, inputs, reuse);
+      codes[i] = ConvertOne(jobs[i], args, import, inputs, target ? &*target : nullptr, reuse);
       progress.Advance();
     }
   };
@@ -183,10 +233,19 @@ void AddConvertCommand(CLI::App& app, CommandAction& action) {
                       "BVH output unit: auto (the source's unit), m, cm, mm, in, ft, cmu")
       ->check(CLI::IsMember({"auto", "m", "cm", "mm", "in", "ft", "cmu"}))
       ->capture_default_str();
+  command->add_option("--retarget", args->retarget,
+                      "Put the motion onto this character's rig (.bvh .gltf .glb .fbx); the output is the character "
+                      "(its meshes and skins) with the motion");
+  command->add_option("--retarget-rest", args->retarget_rest,
+                      "The character's rest pose: auto (bind pose of a skin, else zero pose, else first frame), bind, "
+                      "zero or first-frame")
+      ->check(CLI::IsMember({"auto", "bind", "zero", "first-frame"}))
+      ->capture_default_str();
   AddImportFlags(*command, args->import);
   command->footer(
       "Examples:\n"
       "  mocapfill convert walk.bvh walk.glb\n"
+      "  mocapfill convert walk.bvh geno_walk.glb --retarget Geno.fbx   # onto another character\n"
       "  mocapfill convert clips/*.bvh -o out/            # batch, all cores\n"
       "  mocapfill convert mocap.bvh mocap.glb --unit cmu  # CMU units\n"
       "  mocapfill convert rig.fbx rig.gltf --animation Take1\n"

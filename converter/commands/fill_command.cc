@@ -15,25 +15,20 @@
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
-#include "processing/motion/resample.h"
-#include "processing/synthesis/fill.h"
-#include "processing/synthesis/skeleton_map.h"
+#include "processing/retargeting/rig_mapping.h"
+#include "processing/sketch_fill/sketch_fill.h"
 
 namespace mocapfill::cli {
 
 namespace {
 
 struct FillArgs {
-  std::string input, output, report, map, method = "hierarchical", synthesize, keep, pca;
+  std::string input, output, report, map, method = "hierarchical", synthesize, keep, pca, rest = "auto";
+  std::string position_keys;
   std::vector<std::string> db;
   ImportOptions import;
   FillOptions fill;
   FillFlagText text;
-};
-
-struct Failure {
-  Status status;
-  Stage stage;
 };
 
 std::vector<std::string> SplitList(const std::string& text) {
@@ -44,51 +39,42 @@ std::vector<std::string> SplitList(const std::string& text) {
   return out;
 }
 
-Result<std::map<std::string, std::string>> ReadNameMap(const std::string& path) {
-  std::map<std::string, std::string> map;
-  if (path.empty()) return map;
-  ASSIGN_OR_RETURN(const std::string bytes, ReadFileBytes(path));
-  const nlohmann::json json = nlohmann::json::parse(bytes, nullptr, false);
-  if (json.is_discarded() || !json.is_object())
-    return InvalidData(path + ": expected a JSON object {\"sketch joint\": \"database joint\", ...}");
-  for (const auto& [key, value] : json.items()) {
-    if (!value.is_string()) return InvalidData(path + ": value of '" + key + "' must be a joint name string");
-    map[key] = value.get<std::string>();
-  }
-  return map;
+// --map: inline JSON (starting with '{') or a JSON file.
+Result<std::map<std::string, std::string>> ReadMapArg(const std::string& arg) {
+  if (arg.empty()) return std::map<std::string, std::string>{};
+  const size_t first = arg.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && arg[first] == '{') return ParseRigMapJson(arg, "--map");
+  ASSIGN_OR_RETURN(const std::string bytes, ReadFileBytes(arg));
+  return ParseRigMapJson(bytes, arg);
 }
 
-// --synthesize drops the keys of the listed joints; --keep drops the keys of every other joint.
-Status ApplyKeyOverrides(const FillArgs& args, const Skeleton& skeleton, MotionClip& clip) {
-  const std::vector<std::string> synth = SplitList(args.synthesize), keep = SplitList(args.keep);
-  for (const auto* list : {&synth, &keep})
-    for (const std::string& name : *list)
-      if (!skeleton.Find(name)) return InvalidArgument("joint '" + name + "' is not in the sketch");
-  for (int j = 0; j < skeleton.num_joints(); ++j) {
-    const std::string& name = skeleton.name(j);
-    const bool listed_synth = std::find(synth.begin(), synth.end(), name) != synth.end();
-    const bool listed_keep = std::find(keep.begin(), keep.end(), name) != keep.end();
-    if (listed_synth || (!keep.empty() && !listed_keep)) clip.keys[j] = JointKeys{};
-  }
-  return OkStatus();
-}
-
-nlohmann::ordered_json ReportJson(const FillReport& r, const std::string& db_name, double load_s) {
+nlohmann::ordered_json ReportJson(const SketchFillResult& result, const std::string& db_name, double load_s) {
+  const FillReport& r = result.report;
   nlohmann::ordered_json out;
   out["method"] = r.method;
   out["join"] = r.join;
   out["database"] = db_name;
-  out["frames"] = r.frames;
-  out["rate_hz"] = r.rate_hz;
+  out["frames"] = result.scene.clips.front().num_frames;
+  out["rate_hz"] = result.output_rate_hz;
+  out["uniform"] = result.uniform;
+  out["database_rate_hz"] = result.database_rate_hz;
+  out["rig"] = {{"family", result.rig.family},
+                {"rest", result.rig.rest},
+                {"same_as_database", result.rig.same_as_database},
+                {"mapped_bones", result.rig.mapped_bones},
+                {"warnings", result.rig.warnings}};
   out["key_spacing_frames"] = r.key_spacing_frames;
   out["master_channel"] = r.master_channel;
   out["fragment_band"] = r.fragment_band;
   out["sketch_fragments"] = r.sketch_fragments;
   out["seams"] = r.seams;
-  out["key_error_mean_deg"] = r.key_error_mean_deg;
-  out["key_error_max_deg"] = r.key_error_max_deg;
+  // Measured on the file written, at the sketch's exact key times.
+  out["key_error_mean_deg"] = result.key_error_mean_deg;
+  out["key_error_max_deg"] = result.key_error_max_deg;
+  out["root_key_error_max_m"] = result.translation_key_error_max_m;
+  out["max_frame_jump_deg"] = result.max_frame_jump_deg;
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
-  for (const JointFillInfo& j : r.joints)
+  for (const JointFillInfo& j : result.joints)
     joints.push_back({{"joint", j.name}, {"kind", j.kind}, {"keys", j.keys},
                       {"key_error_mean_deg", j.key_error_mean_deg}, {"key_error_max_deg", j.key_error_max_deg}});
   out["joints"] = joints;
@@ -109,6 +95,7 @@ nlohmann::ordered_json ReportJson(const FillReport& r, const std::string& db_nam
                          {"parameters", s.num_parameters},    {"residuals", s.num_residuals},
                          {"solve_seconds", s.solve_time_s},   {"message", s.message}};
   }
+  out["warnings"] = result.warnings;
   nlohmann::ordered_json stages = nlohmann::ordered_json::object();
   stages["load_database"] = load_s;
   for (const StageTime& s : r.stages) stages[s.stage] = s.seconds;
@@ -116,15 +103,22 @@ nlohmann::ordered_json ReportJson(const FillReport& r, const std::string& db_nam
   return out;
 }
 
-void PrintSummary(const FillReport& r) {
+void PrintSummary(const SketchFillResult& result) {
   if (IsQuiet()) return;
-  int keyed = 0, synthesized = 0, textured = 0;
-  for (const JointFillInfo& j : r.joints) (j.kind == "keyed" ? keyed : j.kind == "textured" ? textured : synthesized)++;
-  std::fprintf(stderr, "fill: %s (%s), %d frames at %.0f Hz, keys every %d frames\n", r.method.c_str(), r.join.c_str(),
-               r.frames, r.rate_hz, r.key_spacing_frames);
-  std::fprintf(stderr, "  joints: %d keyed, %d textured, %d synthesized; %d fragments, %d seams\n", keyed, textured,
-               synthesized, r.sketch_fragments, r.seams);
-  std::fprintf(stderr, "  keys: mean error %.4f deg, max %.4f deg\n", r.key_error_mean_deg, r.key_error_max_deg);
+  const FillReport& r = result.report;
+  int keyed = 0, synthesized = 0, textured = 0, kept = 0;
+  for (const JointFillInfo& j : result.joints)
+    (j.kind == "keyed" ? keyed : j.kind == "textured" ? textured : j.kind == "kept" ? kept : synthesized)++;
+  std::fprintf(stderr, "fill: %s (%s), %d frames at %g Hz%s (filled at %g Hz), keys every %d frames\n",
+               r.method.c_str(), r.join.c_str(), result.scene.clips.front().num_frames, result.output_rate_hz,
+               result.uniform ? "" : " plus off-grid key times", result.database_rate_hz, r.key_spacing_frames);
+  std::fprintf(stderr, "  rig: %s, %d canonical bones mapped, rest %s%s\n", result.rig.family.c_str(),
+               result.rig.mapped_bones, result.rig.rest.c_str(),
+               result.rig.same_as_database ? " (the database's rig)" : "");
+  std::fprintf(stderr, "  joints: %d keyed, %d textured, %d synthesized, %d kept; %d fragments, %d seams\n", keyed,
+               textured, synthesized, kept, r.sketch_fragments, r.seams);
+  std::fprintf(stderr, "  keys: mean error %.4f deg, max %.4f deg (read back from the output, at the keys' own times)\n",
+               result.key_error_mean_deg, result.key_error_max_deg);
   std::fprintf(stderr, "  time:");
   for (const StageTime& s : r.stages) std::fprintf(stderr, " %s %.1f ms", s.stage.c_str(), 1000.0 * s.seconds);
   std::fprintf(stderr, "\n");
@@ -135,21 +129,32 @@ void PrintSummary(const FillReport& r) {
                  r.solver.iterations, r.solver.initial_cost, r.solver.final_cost);
 }
 
-Result<Scene> LoadSketch(const FillArgs& args) {
-  ASSIGN_OR_RETURN(Scene scene, ImportFile(args.input, args.import));
-  if (scene.clips.empty()) return InvalidData(args.input + ": the sketch has no animation");
-  if (scene.clips.size() > 1) scene.clips.resize(1);  // the first animation is the sketch
-  if (scene.clips[0].num_frames < 1) return InvalidData(args.input + ": the sketch's animation is empty");
-  RETURN_IF_ERROR(ApplyKeyOverrides(args, scene.skeleton, scene.clips[0]));
-  bool any = false;
-  for (const JointKeys& k : scene.clips[0].keys) any = any || !k.empty();
-  if (!any) return InvalidData(args.input + ": the sketch has no keyed joint (nothing to fill from)");
-  return scene;
-}
-
 int Fail(const Status& status, Stage stage) {
   PrintError(status.message());
   return ExitCodeFor(status, stage);
+}
+
+// The key errors as the written file holds them: the output read back and evaluated at the
+// sketch's exact key times. Replaces the in-memory figures of `result`.
+Status MeasureWrittenKeys(const std::string& path, const Scene& sketch, SketchFillResult& result) {
+  ASSIGN_OR_RETURN(Scene written, ImportFile(path));
+  if (written.clips.empty()) return Internal(path + ": the written file has no animation to check");
+  const MotionClip& sketch_clip = sketch.clips.front();
+  result.key_checks = CheckKeys(sketch.skeleton, written.clips.front(), sketch_clip);
+  result.key_error_mean_deg = result.key_error_max_deg = 0.0;
+  int count = 0;
+  for (const KeyCheck& k : result.key_checks) {
+    result.key_error_max_deg = std::max(result.key_error_max_deg, k.max_deg);
+    result.key_error_mean_deg += k.mean_deg * k.keys;
+    count += k.keys;
+    for (JointFillInfo& j : result.joints)
+      if (j.name == k.joint) {
+        j.key_error_mean_deg = k.mean_deg;
+        j.key_error_max_deg = k.max_deg;
+      }
+  }
+  if (count) result.key_error_mean_deg /= count;
+  return OkStatus();
 }
 
 int RunFill(FillArgs& args) {
@@ -160,44 +165,52 @@ int RunFill(FillArgs& args) {
     if (method.ok()) args.fill.method = *method;
   }
   if (flags.ok()) flags = args.fill.Validate();
+  SketchFillOptions options;
+  options.fill = args.fill;
+  if (flags.ok()) {
+    Result<RestSource> rest = ParseRestSource(args.rest);
+    flags = rest.status();
+    if (rest.ok()) options.rest = *rest;
+  }
   if (!flags.ok()) return Fail(flags, Stage::kProcessing);
   if (!IsExportExtension(args.output))
     return Fail(InvalidArgument(args.output + ": output must end in .gltf, .glb or .bvh"), Stage::kOutput);
   if (IsSameFile(args.input, args.output)) return Fail(IoError(args.output + ": refusing to overwrite the input"), Stage::kOutput);
-  Result<std::map<std::string, std::string>> map = ReadNameMap(args.map);
+  Result<std::map<std::string, std::string>> map = ReadMapArg(args.map);
   if (!map.ok()) return Fail(map.status(), Stage::kInput);
-  Result<Scene> scene = LoadSketch(args);
+  options.map = *map;
+  options.output_rate_hz = args.import.rate_hz;
+  options.keep = SplitList(args.keep);
+  options.synthesize = SplitList(args.synthesize);
+  options.position_keys = SplitList(args.position_keys);
+  Result<Scene> scene = ImportFile(args.input, args.import);
   if (!scene.ok()) return Fail(scene.status(), Stage::kInput);
+  if (scene->clips.size() > 1) scene->clips.resize(1);  // the first animation is the sketch
   const auto load_start = std::chrono::steady_clock::now();
   Result<MotionDatabase> db = LoadDatabase(args.db);
   if (!db.ok()) return Fail(db.status(), Stage::kInput);
   const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
-  Result<SkeletonMapping> mapping = MapSkeletons(scene->skeleton, scene->clips[0], db->skeleton(), *map);
-  if (!mapping.ok()) return Fail(mapping.status().WithContext(args.input), Stage::kInput);
-  for (const std::string& w : mapping->warnings) PrintWarning(args.input + ": " + w);
-  ResampleOptions resample;
-  resample.rate_hz = db->rate_hz();
-  Result<MotionClip> sketch = ResampleClip(scene->clips[0], resample);
-  if (!sketch.ok()) return Fail(sketch.status().WithContext(args.input), Stage::kInput);
   Result<PcaModel> model = PcaModel{};
   if (!args.pca.empty()) {
     model = ReadPcaModel(args.pca);
     if (!model.ok()) return Fail(model.status(), Stage::kInput);
   }
-  FillEngine engine(*db);
-  if (!args.pca.empty()) engine.SetPcaModel(&*model);
-  Result<FillResult> filled = engine.Fill(ToDatabaseClip(*mapping, db->skeleton(), *sketch), args.fill);
-  if (!filled.ok()) return Fail(filled.status().WithContext(args.input), Stage::kProcessing);
-  Scene out = std::move(*scene);
-  out.clips = {ToSketchClip(*mapping, filled->clip, *sketch, db->root_joint())};
-  const Status written = ExportFile(out, args.output);
+  Result<SketchFillResult> filled = FillSketch(*scene, *db, options, args.pca.empty() ? nullptr : &*model);
+  if (!filled.ok()) {
+    const Stage stage = filled.status().code() == ErrorCode::kInvalidData ? Stage::kInput : Stage::kProcessing;
+    return Fail(filled.status().WithContext(args.input), stage);
+  }
+  for (const std::string& w : filled->warnings) PrintWarning(args.input + ": " + w);
+  const Status written = ExportFile(filled->scene, args.output);
   if (!written.ok()) return Fail(written, Stage::kOutput);
+  const Status measured = MeasureWrittenKeys(args.output, *scene, *filled);
+  if (!measured.ok()) return Fail(measured, Stage::kProcessing);
   const std::string db_name = args.db.empty() ? "default" : args.db[0];
   if (!args.report.empty()) {
-    const Status report = WriteFileAtomic(args.report, ReportJson(filled->report, db_name, load_s).dump(2) + "\n");
+    const Status report = WriteFileAtomic(args.report, ReportJson(*filled, db_name, load_s).dump(2) + "\n");
     if (!report.ok()) return Fail(report, Stage::kOutput);
   }
-  PrintSummary(filled->report);
+  PrintSummary(*filled);
   return kExitOk;
 }
 
@@ -217,7 +230,14 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
                       "PCA model (.pca, `mocapfill pca build`) for --method pca|hybrid; default: built in memory "
                       "from the database (time reported as stage pca_model)");
   command->add_option("--report", args->report, "Write a JSON report (joints, fragment sources, seams, key errors, times)");
-  command->add_option("--map", args->map, "JSON object renaming sketch joints to database joints");
+  command->add_option("--map", args->map,
+                      "Rig map overrides, inline JSON or a JSON file: {\"sketch joint\": \"canonical bone or database "
+                      "joint\", ...} (\"\" leaves a joint unmapped); the rest is mapped automatically");
+  command->add_option("--rest", args->rest, "The sketch rig's rest pose: auto, bind, zero or first-frame")
+      ->check(CLI::IsMember({"auto", "bind", "zero", "first-frame"}))
+      ->capture_default_str();
+  command->add_option("--position-keys", args->position_keys,
+                      "Joints whose translation keys are world-space position targets (comma-separated)");
   command->add_option("--synthesize", args->synthesize, "Joints to synthesise even if keyed (comma-separated)");
   command->add_option("--keep", args->keep, "Only these joints are keyed; every other joint is synthesised");
   AddFillFlags(*command, args->fill, args->text);

@@ -38,13 +38,18 @@ TEST(FillCli, FillsTheGltfSketchFromTheDefaultDatabaseWithAReport) {
   EXPECT_EQ(json["method"], "hierarchical");
   EXPECT_EQ(json["key_spacing_frames"], 8);
   EXPECT_LT(json["key_error_mean_deg"].get<double>(), kKeyToleranceDeg);
-  int synthesized = 0, textured = 0;
+  EXPECT_LT(json["key_error_max_deg"].get<double>(), 0.01);  // issue #14: read back, at the key times
+  EXPECT_EQ(json["rate_hz"], 30.0);
+  EXPECT_TRUE(json["rig"]["same_as_database"].get<bool>());
+  int synthesized = 0, textured = 0, kept = 0;
   for (const auto& joint : json["joints"]) {
     if (joint["kind"] == "synthesized") ++synthesized;
     if (joint["kind"] == "textured") ++textured;
+    if (joint["kind"] == "kept") ++kept;
   }
   EXPECT_EQ(textured, 9);      // root and legs, textured by default
-  EXPECT_EQ(synthesized, 13);  // upper body and the static joint_Root
+  EXPECT_EQ(synthesized, 12);  // the upper body
+  EXPECT_EQ(kept, 1);          // the static joint_Root, outside the canonical humanoid
   ASSERT_GT(json["fragments"].size(), 10u);
   EXPECT_NE(json["fragments"][0]["clip"].get<std::string>().find("dataset-1_"), std::string::npos);
   EXPECT_TRUE(json["stage_seconds"].contains("match"));
@@ -98,11 +103,30 @@ TEST(FillCli, RejectsASketchWithoutKeyedJoints) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(FillCli, RejectsJointsUnknownToTheDatabase) {
+// Another rig (CMU: other names, helper joints, 120 Hz) is mapped and filled on its own rig.
+TEST(FillCli, FillsASketchOnAnotherRigAtItsOwnRate) {
+  const std::string out = testing::TestOutputDir("fill") + "/cmu_01_01_filled.glb";
+  const std::string report = testing::ScratchDir("fill_cmu") + "/fill.json";
+  const RunResult run =
+      RunCli("fill " + testing::FixturePath("bvh/cmu_01_01_short.bvh") + " -o " + out + " --report " + report +
+             " --keep Hips,LeftUpLeg,LeftLeg,LeftFoot,LeftToeBase,RightUpLeg,RightLeg,RightFoot,RightToeBase");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(ReadAll(report));
+  EXPECT_FALSE(json["rig"]["same_as_database"].get<bool>());
+  EXPECT_EQ(json["rate_hz"], 120.0);
+  EXPECT_LT(json["key_error_max_deg"].get<double>(), 0.01);
+  EXPECT_LT(json["max_frame_jump_deg"].get<double>(), 60.0);
+  Result<Scene> filled = ImportFile(out);
+  ASSERT_TRUE(filled.ok()) << filled.status().message();
+  EXPECT_EQ(filled->skeleton.num_joints(), 31);  // CMU's own skeleton
+  EXPECT_EQ(filled->clips[0].sample_rate_hz, 120.0);
+}
+
+TEST(FillCli, RejectsARigThatIsNotHumanoid) {
   const std::string out = testing::ScratchDir("fill_unknown") + "/out.glb";
-  const RunResult run = RunCli("fill " + testing::FixturePath("bvh/cmu_01_01_short.bvh") + " -o " + out);
+  const RunResult run = RunCli("fill " + testing::FixturePath("gltf/simple_skin.gltf") + " -o " + out);
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("is not in the database skeleton"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("humanoid"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(out));
 }
 

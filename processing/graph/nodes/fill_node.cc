@@ -1,12 +1,11 @@
-// fill: completes the sketch's missing joints from a database (processing/synthesis/fill.h),
-// as the `fill` verb does: the sketch is mapped onto the database skeleton by joint name,
-// resampled to the database rate, filled, and put back on the sketch's skeleton.
+// fill: completes the sketch's missing joints from a database, as the `fill` verb does: one
+// call of the fill use case (processing/sketch_fill), which maps the sketch's rig to the
+// canonical humanoid, fills on the database's rig and returns the sketch's rig at its rate.
 #include <algorithm>
 
 #include "processing/graph/nodes/node_support.h"
 #include "processing/graph/nodes/nodes.h"
-#include "processing/synthesis/fill.h"
-#include "processing/synthesis/skeleton_map.h"
+#include "processing/sketch_fill/sketch_fill.h"
 
 namespace mocapfill::graph {
 
@@ -14,53 +13,36 @@ namespace {
 
 class FillNode : public Node {
  public:
-  FillNode(FillOptions options, std::map<std::string, std::string> rename, std::vector<std::string> keep,
-           std::vector<std::string> synthesize)
-      : options_(std::move(options)), rename_(std::move(rename)), keep_(std::move(keep)),
-        synthesize_(std::move(synthesize)) {}
+  explicit FillNode(SketchFillOptions options) : options_(std::move(options)) {}
 
   Result<Value> Run(const NodeInputs& inputs, RunContext& context) const override {
     const Scene& scene = inputs.Motion("sketch");
     const MotionDatabase& db = inputs.Database("database");
     ASSIGN_OR_RETURN(const MotionClip* first, FirstClip(scene, "sketch"));
-    MotionClip clip = *first;
-    RETURN_IF_ERROR(ApplyKeyOverrides(scene.skeleton, clip));
-    if (std::all_of(clip.keys.begin(), clip.keys.end(), [](const JointKeys& k) { return k.empty(); }))
-      return InvalidData("sketch: no keyed joint (nothing to fill from)");
-    ASSIGN_OR_RETURN(const SkeletonMapping mapping, MapSkeletons(scene.skeleton, clip, db.skeleton(), rename_));
-    for (const std::string& w : mapping.warnings) context.warnings.push_back("sketch: " + w);
-    ASSIGN_OR_RETURN(const MotionClip sketch, AtRate(clip, db.rate_hz()));
-    FillEngine engine(db);
+    Scene sketch = scene;
+    sketch.clips = {*first};
     // The pca and hybrid methods use a given model, else build one from the database.
-    if (inputs.Has("model")) engine.SetPcaModel(&inputs.Model("model"));
-    ASSIGN_OR_RETURN(FillResult filled, engine.Fill(ToDatabaseClip(mapping, db.skeleton(), sketch), options_));
-    return WithClip(scene, ToSketchClip(mapping, filled.clip, sketch, db.root_joint()));
+    const PcaModel* model = inputs.Has("model") ? &inputs.Model("model") : nullptr;
+    Result<SketchFillResult> filled = FillSketch(sketch, db, options_, model);
+    if (!filled.ok()) return filled.status().WithContext("sketch");
+    for (const std::string& w : filled->warnings) context.warnings.push_back("sketch: " + w);
+    return WithClip(scene, std::move(filled->scene.clips.front()));
   }
 
  private:
-  // "synthesize" drops the keys of the listed joints; "keep" drops the keys of all others.
-  Status ApplyKeyOverrides(const Skeleton& skeleton, MotionClip& clip) const {
-    for (const auto* list : {&synthesize_, &keep_})
-      for (const std::string& name : *list)
-        if (!skeleton.Find(name)) return InvalidData("sketch: joint '" + name + "' (option keep/synthesize) is not in the sketch");
-    for (int j = 0; j < skeleton.num_joints(); ++j) {
-      const std::string& name = skeleton.name(j);
-      const bool synth = std::find(synthesize_.begin(), synthesize_.end(), name) != synthesize_.end();
-      const bool kept = std::find(keep_.begin(), keep_.end(), name) != keep_.end();
-      if (synth || (!keep_.empty() && !kept)) clip.keys[j] = JointKeys{};
-    }
-    return OkStatus();
-  }
-
-  FillOptions options_;
-  std::map<std::string, std::string> rename_;
-  std::vector<std::string> keep_, synthesize_;
+  SketchFillOptions options_;
 };
 
 OptionSpec MethodOption() {
   OptionSpec spec = StringOption("method", "hierarchical", {},
                                  "fill method; every name ParseFillMethod knows (mean, nn, fragment, hierarchical, ...)");
   spec.check = [](const OptionValue& v) { return ParseFillMethod(v.text).status(); };
+  return spec;
+}
+
+OptionSpec RestOption() {
+  OptionSpec spec = StringOption("rest", "auto", {"auto", "bind", "zero", "first-frame"}, "the sketch rig's rest pose");
+  spec.check = [](const OptionValue& v) { return ParseRestSource(v.text).status(); };
   return spec;
 }
 
@@ -71,7 +53,8 @@ OptionSpec JoinOption() {
 }
 
 Result<std::unique_ptr<Node>> CreateFill(const NodeOptions& o) {
-  FillOptions options;
+  SketchFillOptions sketch_options;
+  FillOptions& options = sketch_options.fill;
   options.method = *ParseFillMethod(o.String("method"));
   options.join = *ParseJoinCriterion(o.String("join"));
   options.texture = o.Bool("texture");
@@ -82,8 +65,12 @@ Result<std::unique_ptr<Node>> CreateFill(const NodeOptions& o) {
   options.fragment_band_hz = o.Number("fragment_band_hz");
   options.threads = o.Int("threads");
   RETURN_IF_ERROR(options.Validate());
-  return std::unique_ptr<Node>(
-      new FillNode(options, o.StringMap("rename"), o.StringList("keep"), o.StringList("synthesize")));
+  ASSIGN_OR_RETURN(sketch_options.rest, ParseRestSource(o.String("rest")));
+  sketch_options.output_rate_hz = o.Number("rate_hz");
+  sketch_options.map = o.StringMap("rename");
+  sketch_options.keep = o.StringList("keep");
+  sketch_options.synthesize = o.StringList("synthesize");
+  return std::unique_ptr<Node>(new FillNode(std::move(sketch_options)));
 }
 
 }  // namespace
@@ -96,7 +83,7 @@ NodeTypeSpec FillNodeSpec() {
                  {"database", PortType::kDatabase, false, "motion database the missing joints come from"},
                  {"model", PortType::kPcaModel, true,
                   "PCA model of the pca and hybrid methods (default: built from the database)"}};
-  spec.output = PortSpec{"motion", PortType::kMotion, false, "the sketch's asset with a complete animation at the database rate"};
+  spec.output = PortSpec{"motion", PortType::kMotion, false, "the sketch's asset with a complete animation at the sketch's rate"};
   spec.options = {
       MethodOption(),
       JoinOption(),
@@ -107,7 +94,10 @@ NodeTypeSpec FillNodeSpec() {
       IntOption("max_drivers", 3, 0, std::nullopt, "hierarchical: driving joints per group (0 = all)"),
       NumberOption("fragment_band_hz", 1.0, 0.0, true, std::nullopt, "Hz", "peak frequency of the fragmentation band"),
       IntOption("threads", 0, 0, std::nullopt, "matching threads (0 = all cores)"),
-      ListOption("rename", OptionType::kStringMap, "sketch joint -> database joint names, e.g. {\"Hip\": \"Hips\"}"),
+      ListOption("rename", OptionType::kStringMap,
+                 "rig map overrides: sketch joint -> canonical bone or database joint, e.g. {\"Hip\": \"hips\"}"),
+      RestOption(),
+      NumberOption("rate_hz", 0.0, 0.0, false, 1000.0, "Hz", "output rate (0 = the sketch's own)"),
       ListOption("keep", OptionType::kStringList, "only these joints stay keyed; every other joint is synthesised"),
       ListOption("synthesize", OptionType::kStringList, "joints synthesised even when keyed"),
   };

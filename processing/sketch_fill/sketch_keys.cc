@@ -1,0 +1,228 @@
+#include "processing/sketch_fill/sketch_keys.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "processing/core/rotation.h"
+
+namespace mocapfill {
+
+namespace {
+
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+// Key times closer than this to a frame of the output grid are on it (glTF stores times
+// as float32: 1e-6 s is far above their rounding at animation lengths).
+constexpr double kOnGridS = 1e-6;
+
+bool Listed(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool IsAncestorOrSelf(const Skeleton& skeleton, int ancestor, int joint) {
+  for (int j = joint; j != kNoParent; j = skeleton.parent(j))
+    if (j == ancestor) return true;
+  return false;
+}
+
+// Frame interval [i, i + 1] and fraction u for `time_s` (clamped to the clip's span).
+void Locate(const MotionClip& clip, double time_s, int& i, double& u) {
+  const int last = clip.num_frames - 1;
+  if (last <= 0 || time_s <= clip.time_s(0)) {
+    i = 0;
+    u = 0.0;
+    return;
+  }
+  if (time_s >= clip.time_s(last)) {
+    i = last - 1;
+    u = 1.0;
+    return;
+  }
+  if (clip.frame_times_s.empty()) {
+    const double s = time_s * clip.sample_rate_hz;
+    i = std::min(static_cast<int>(std::floor(s)), last - 1);
+    u = s - i;
+  } else {
+    const auto it = std::upper_bound(clip.frame_times_s.begin(), clip.frame_times_s.end(), time_s);
+    i = static_cast<int>(it - clip.frame_times_s.begin()) - 1;
+    i = std::clamp(i, 0, last - 1);
+    const double t0 = clip.frame_times_s[i], t1 = clip.frame_times_s[i + 1];
+    u = (time_s - t0) / (t1 - t0);
+  }
+  u = std::clamp(u, 0.0, 1.0);
+}
+
+int FrameAt(const MotionClip& clip, double time_s) {
+  int i = 0;
+  double u = 0.0;
+  Locate(clip, time_s, i, u);
+  return u > 0.5 ? std::min(i + 1, clip.num_frames - 1) : i;
+}
+
+// Linear interpolation of displacements between keys, held outside them.
+template <typename T>
+T Interpolate(const std::vector<double>& times, const std::vector<T>& values, double t) {
+  if (t <= times.front()) return values.front();
+  if (t >= times.back()) return values.back();
+  const size_t k = static_cast<size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin());
+  const double u = (t - times[k - 1]) / (times[k] - times[k - 1]);
+  return ((1.0 - u) * values[k - 1] + u * values[k]).eval();
+}
+
+}  // namespace
+
+Status ApplyKeyOverrides(const Skeleton& skeleton, const std::vector<std::string>& keep,
+                         const std::vector<std::string>& synthesize, MotionClip& clip) {
+  for (const auto* list : {&synthesize, &keep})
+    for (const std::string& name : *list)
+      if (!skeleton.Find(name)) return InvalidArgument("joint '" + name + "' is not in the sketch");
+  for (int j = 0; j < skeleton.num_joints(); ++j) {
+    const std::string& name = skeleton.name(j);
+    if (Listed(synthesize, name) || (!keep.empty() && !Listed(keep, name))) clip.keys[j] = JointKeys{};
+  }
+  return OkStatus();
+}
+
+Status CheckTranslationKeys(const Skeleton& skeleton, const MotionClip& clip, int hips,
+                            const std::vector<std::string>& position_keys) {
+  for (const std::string& name : position_keys) {
+    const std::optional<int> j = skeleton.Find(name);
+    if (!j) return InvalidArgument("position key joint '" + name + "' is not in the sketch");
+    if (clip.keys[*j].translation_frames.empty())
+      return InvalidArgument("position key joint '" + name + "' has no translation keys in the sketch");
+  }
+  for (int j = 0; j < skeleton.num_joints(); ++j) {
+    if (IsAncestorOrSelf(skeleton, j, hips) || Listed(position_keys, skeleton.name(j))) continue;
+    double worst = 0.0;
+    for (int f : clip.keys[j].translation_frames)
+      worst = std::max(worst, (clip.translation(f, j) - skeleton.joint(j).rest_translation).norm());
+    if (worst <= 1e-4) continue;
+    const double rest = skeleton.joint(j).rest_translation.norm();
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "joint '%s' has translation keys up to %.1f cm from its rest offset (%.1f cm long): applied as "
+                  "bone offsets they would stretch or move the bone; give --position-keys %s to make them "
+                  "world-space position targets, or remove them",
+                  skeleton.name(j).c_str(), 100.0 * worst, 100.0 * rest, skeleton.name(j).c_str());
+    return InvalidData(text);
+  }
+  return OkStatus();
+}
+
+RotationKeys RotationKeysOf(const MotionClip& clip, int joint) {
+  RotationKeys keys;
+  const JointKeys& k = clip.keys[joint];
+  if (!k.rotation_times_s.empty() && k.rotation_times_s.size() == k.rotation_values.size()) {
+    keys.times_s = k.rotation_times_s;
+    keys.values = k.rotation_values;
+    return keys;
+  }
+  for (int f : k.rotation_frames) {
+    keys.times_s.push_back(clip.time_s(f));
+    keys.values.push_back(clip.rotation(f, joint));
+  }
+  return keys;
+}
+
+TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint) {
+  TranslationKeys keys;
+  const JointKeys& k = clip.keys[joint];
+  if (!k.translation_times_s.empty() && k.translation_times_s.size() == k.translation_values.size()) {
+    keys.times_s = k.translation_times_s;
+    keys.values = k.translation_values;
+    return keys;
+  }
+  for (int f : k.translation_frames) {
+    keys.times_s.push_back(clip.time_s(f));
+    keys.values.push_back(clip.translation(f, joint));
+  }
+  return keys;
+}
+
+std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& uniform) {
+  double end = sketch.time_s(sketch.num_frames - 1);
+  std::vector<double> keys;
+  for (int j = 0; j < sketch.num_joints; ++j) {
+    for (double t : RotationKeysOf(sketch, j).times_s) keys.push_back(t);
+    for (double t : TranslationKeysOf(sketch, j).times_s) keys.push_back(t);
+  }
+  for (double t : keys) end = std::max(end, t);
+  const int frames = static_cast<int>(std::floor(end * rate_hz + 1e-6)) + 1;
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) times.push_back(f / rate_hz);
+  uniform = true;
+  for (double t : keys) {
+    const double on_grid = std::round(t * rate_hz) / rate_hz;
+    if (std::abs(t - on_grid) <= kOnGridS) continue;
+    times.push_back(t);
+    uniform = false;
+  }
+  std::sort(times.begin(), times.end());
+  // Grid frames that fall next to an off-grid key give way to it: the key time is the sample.
+  std::vector<double> kept;
+  for (double t : times)
+    if (kept.empty() || t - kept.back() > kOnGridS) kept.push_back(t);
+  if (!uniform && kept.back() < end) kept.push_back(end);
+  return kept;
+}
+
+Quaterniond RotationAt(const MotionClip& clip, int joint, double time_s) {
+  int i = 0;
+  double u = 0.0;
+  Locate(clip, time_s, i, u);
+  if (clip.num_frames == 1) return clip.rotation(0, joint);
+  return clip.rotation(i, joint).slerp(u, clip.rotation(i + 1, joint)).normalized();
+}
+
+Vector3d TranslationAt(const MotionClip& clip, int joint, double time_s) {
+  int i = 0;
+  double u = 0.0;
+  Locate(clip, time_s, i, u);
+  if (clip.num_frames == 1) return clip.translation(0, joint);
+  return (1.0 - u) * clip.translation(i, joint) + u * clip.translation(i + 1, joint);
+}
+
+void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {
+  for (int j = 0; j < sketch.num_joints; ++j) {
+    const RotationKeys keys = RotationKeysOf(sketch, j);
+    if (!keys.times_s.empty()) {
+      std::vector<Vector3d> offsets;
+      for (size_t k = 0; k < keys.times_s.size(); ++k) {
+        const Quaterniond current = out.rotation(FrameAt(out, keys.times_s[k]), j);
+        offsets.push_back(LogMap(keys.values[k] * current.conjugate()));
+      }
+      for (int f = 0; f < out.num_frames; ++f) {
+        const Vector3d offset = Interpolate(keys.times_s, offsets, out.time_s(f));
+        out.rotation(f, j) = (ExpMap(offset) * out.rotation(f, j)).normalized();
+      }
+      // The displacement is exact where a key sits on a frame; write the key itself there so
+      // rounding of the exponential map leaves nothing behind.
+      for (size_t k = 0; k < keys.times_s.size(); ++k) out.rotation(FrameAt(out, keys.times_s[k]), j) = keys.values[k];
+    }
+    const TranslationKeys moves = TranslationKeysOf(sketch, j);
+    if (moves.times_s.empty() || j != hips) continue;
+    std::vector<Vector3d> offsets;
+    for (size_t k = 0; k < moves.times_s.size(); ++k)
+      offsets.push_back(moves.values[k] - out.translation(FrameAt(out, moves.times_s[k]), j));
+    for (int f = 0; f < out.num_frames; ++f) out.translation(f, j) += Interpolate(moves.times_s, offsets, out.time_s(f));
+    for (size_t k = 0; k < moves.times_s.size(); ++k)
+      out.translation(FrameAt(out, moves.times_s[k]), j) = moves.values[k];
+  }
+}
+
+std::vector<double> MaxFrameJumpsDeg(const MotionClip& clip) {
+  std::vector<double> worst(clip.num_joints, 0.0);
+  for (int f = 1; f < clip.num_frames; ++f)
+    for (int j = 0; j < clip.num_joints; ++j)
+      worst[j] = std::max(worst[j], GeodesicAngle(clip.rotation(f - 1, j), clip.rotation(f, j)) * kDegPerRad);
+  return worst;
+}
+
+double MaxFrameJumpDeg(const MotionClip& clip) {
+  const std::vector<double> jumps = MaxFrameJumpsDeg(clip);
+  return jumps.empty() ? 0.0 : *std::max_element(jumps.begin(), jumps.end());
+}
+
+}  // namespace mocapfill

@@ -1,0 +1,60 @@
+// The sketch's keys in the fill use case: which joints stay keyed, which translation keys are
+// acceptable, at which times the output is sampled, and how the output is pinned to the keys
+// at the animator's exact key times. Internal to mocapfill_sketch_fill.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "processing/core/motion_clip.h"
+#include "processing/core/skeleton.h"
+#include "processing/core/status.h"
+
+namespace mocapfill {
+
+// `synthesize` drops the keys of the listed joints; `keep` drops the keys of every other
+// joint. kInvalidArgument naming a joint the skeleton lacks.
+Status ApplyKeyOverrides(const Skeleton& skeleton, const std::vector<std::string>& keep,
+                         const std::vector<std::string>& synthesize, MotionClip& clip);
+
+// Joints other than `hips` and its ancestors that carry translation keys moving them away
+// from their rest offset are refused (kInvalidData saying what the keys would do), unless
+// they are listed in `position_keys`.
+Status CheckTranslationKeys(const Skeleton& skeleton, const MotionClip& clip, int hips,
+                            const std::vector<std::string>& position_keys);
+
+// A joint's keys at the source's exact times: its recorded key times and values where the
+// importer kept them, else its keyed frames at their frame times.
+struct RotationKeys {
+  std::vector<double> times_s;
+  std::vector<Eigen::Quaterniond> values;
+};
+struct TranslationKeys {
+  std::vector<double> times_s;
+  std::vector<Eigen::Vector3d> values;
+};
+RotationKeys RotationKeysOf(const MotionClip& clip, int joint);
+TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint);
+
+// Output sample times: the frames of `rate_hz` over the sketch's duration, plus every key
+// time that is not on that grid (then `uniform` is false).
+std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& uniform);
+
+// The clip as glTF LINEAR interpolation reads it at `time_s` (slerp and lerp between the
+// frames around it, by their times; the ends hold).
+Eigen::Quaterniond RotationAt(const MotionClip& clip, int joint, double time_s);
+Eigen::Vector3d TranslationAt(const MotionClip& clip, int joint, double time_s);
+
+// Moves every keyed joint of `out` (same skeleton as `sketch`, frame times containing every
+// key time) onto its keys with a displacement map: the offset at each key, interpolated
+// between keys (held before the first and after the last), so that the output passes
+// exactly through each key and keeps its own detail in between.
+void PinKeys(const MotionClip& sketch, int hips, MotionClip& out);
+
+// Largest rotation change of any joint between consecutive frames, in degrees; and per joint.
+double MaxFrameJumpDeg(const MotionClip& clip);
+std::vector<double> MaxFrameJumpsDeg(const MotionClip& clip);
+
+}  // namespace mocapfill

@@ -1,0 +1,17 @@
+# Rest-pose-aware retargeting between real rigs and the any-rig fill use case (issue #14).
+add_library(mocapfill_test_bone_directions STATIC ${CMAKE_CURRENT_LIST_DIR}/../support/bone_directions.cc)
+target_link_libraries(mocapfill_test_bone_directions PUBLIC mocapfill_retargeting)
+mocapfill_set_warnings(mocapfill_test_bone_directions)
+
+mocapfill_add_test(retarget_transfer_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/retarget_transfer_test.cc
+  LIBS mocapfill_retargeting mocapfill_formats mocapfill_test_bone_directions)
+add_executable(dbg_retarget ${CMAKE_CURRENT_LIST_DIR}/dbg_main.cc)
+target_link_libraries(dbg_retarget mocapfill_sketch_fill mocapfill_evaluation mocapfill_retargeting mocapfill_formats mocapfill_test_bone_directions)
+
+mocapfill_add_test(sketch_fill_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/../support/sparse_sketch.cc
+          ${CMAKE_CURRENT_LIST_DIR}/../formats/gltf_test_support.cc
+  LIBS mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
+       mocapfill_test_bone_directions)
