@@ -99,7 +99,8 @@ void PrintText(const Scene& scene, const RigReport& r) {
     std::printf("  %-14s %s\n", HumanoidBoneName(BoneAt(i)), j >= 0 ? s.name(j).c_str() : "\xE2\x80\x94");
     if (j < 0) missing += std::string(missing.empty() ? "" : ", ") + HumanoidBoneName(BoneAt(i));
   }
-  std::printf("missing:   %s (required bones are all present)\n", missing.empty() ? "none" : missing.c_str());
+  // Errors stop before this point when a required bone is missing: what is left is optional.
+  std::printf("missing:   %s\n", missing.empty() ? "none" : (missing + " (optional; every required bone is present)").c_str());
   std::printf("rest:      %s: %s\n", RestSourceName(r.rest.source), r.rest.reason.c_str());
   std::printf("proportions (m): hip height %.3f, leg length %.3f, arm length %.3f, height %.3f\n",
               r.proportions.hip_height, r.proportions.leg_length, r.proportions.arm_length, r.proportions.height);
