@@ -19,5 +19,6 @@ void AddFillCommand(CLI::App& app, CommandAction& action);
 void AddEvalCommand(CLI::App& app, CommandAction& action);
 void AddPcaCommand(CLI::App& app, CommandAction& action);
 void AddRunCommand(CLI::App& app, CommandAction& action);
+void AddRigCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace mocapfill::cli

@@ -12,6 +12,7 @@ constexpr Verb kVerbs[] = {
     {"convert", AddConvertCommand}, {"inspect", AddInspectCommand}, {"db", AddDbCommand},
     {"filter", AddFilterCommand},   {"analyze", AddAnalyzeCommand}, {"fill", AddFillCommand},
     {"eval", AddEvalCommand},       {"pca", AddPcaCommand},         {"run", AddRunCommand},
+    {"rig", AddRigCommand},
 };
 
 }  // namespace

@@ -40,6 +40,9 @@ RigRest ZeroPose(const Skeleton& skeleton);
 // True when the pose stands: the mapped legs point down from the hips, the head is above the
 // hips, and left and right limbs are apart. A pose that fails this cannot serve as a rest.
 bool IsStandingPose(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& pose);
+// Why the pose does not stand ("the leftUpperLeg does not point down from the hips"), or ""
+// when it does (IsStandingPose is this being empty).
+std::string StandingProblem(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& pose);
 
 // Chooses the rest pose of `scene`'s skeleton. kBind needs a skin (joints outside every skin
 // keep their zero-pose rotations, placed relative to the bound ones), kFirstFrame a clip;

@@ -48,8 +48,14 @@ struct RigMapOptions {
 Result<RigMapping> MapHumanoid(const Skeleton& skeleton, const std::vector<Eigen::Vector3d>& pose_world_positions,
                                const RigMapOptions& options = {});
 
-// Parses a rig map: a JSON object {"joint": "bone", ...}, given inline (text starting with
-// '{') or as a file path. Errors name the file or say the text is not such an object.
+// Why a joint has no canonical bone, for reports: "end bone", "twist helper", "finger",
+// "root above the hips", "extra spine or neck joint (folded into its neighbours)", ...;
+// "" for a mapped joint.
+std::string UnmappedJointReason(const Skeleton& skeleton, const RigMapping& mapping, int joint);
+
+// Parses a rig map from JSON text: an object {"joint": "bone", ...} ("" or null leaves the
+// joint unmapped). Processing reads no files: the caller reads a map file and passes its
+// text. `origin` names where the text came from in messages (a file name, or "--map").
 Result<std::map<std::string, std::string>> ParseRigMapJson(const std::string& json_text, const std::string& origin);
 
 }  // namespace mocapfill

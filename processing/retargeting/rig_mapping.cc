@@ -1,0 +1,383 @@
+// Automatic humanoid mapping. Names propose, structure decides:
+//   1. the upper legs and the hands are found by name (with their side);
+//   2. each leg is walked down (upper leg, lower leg, foot, toes) and each arm up from the
+//      hand (lower arm, upper arm, then a side joint under the torso is the shoulder): so
+//      SMPL's L_Shoulder and the Biovision LeftShoulder become upper arms, and SMPL's L_Foot
+//      the toes, whatever their words say;
+//   3. the hips are where the legs meet; the torso is the chain from the hips up to the joint
+//      the arms branch from; the head is named "head" (or ends the neck chain);
+//   4. sides are checked against the pose (toes ahead of ankles give forward), and a user map
+//      overrides any pair.
+#include "processing/retargeting/rig_mapping.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "processing/retargeting/rig_names.h"
+#include "processing/retargeting/rig_structure.h"
+
+namespace mocapfill {
+
+namespace {
+
+using rig_names::JointName;
+using rig_names::NameKind;
+using rig_names::Side;
+using B = HumanoidBone;
+
+std::string Quoted(const std::string& s) { return "'" + s + "'"; }
+
+std::string JoinNames(const Skeleton& skeleton, const std::vector<int>& joints) {
+  if (joints.empty()) return "none";
+  std::string out;
+  for (int j : joints) out += (out.empty() ? "" : ", ") + Quoted(skeleton.name(j));
+  return out;
+}
+
+NameKind KindOfBone(HumanoidBone bone) {
+  switch (bone) {
+    case B::kHips: return NameKind::kHips;
+    case B::kSpine:
+    case B::kChest:
+    case B::kUpperChest: return NameKind::kSpine;
+    case B::kNeck: return NameKind::kNeck;
+    case B::kHead: return NameKind::kHead;
+    case B::kLeftShoulder:
+    case B::kRightShoulder: return NameKind::kShoulder;
+    case B::kLeftUpperArm:
+    case B::kRightUpperArm: return NameKind::kUpperArm;
+    case B::kLeftLowerArm:
+    case B::kRightLowerArm: return NameKind::kLowerArm;
+    case B::kLeftHand:
+    case B::kRightHand: return NameKind::kHand;
+    case B::kLeftUpperLeg:
+    case B::kRightUpperLeg: return NameKind::kUpperLeg;
+    case B::kLeftLowerLeg:
+    case B::kRightLowerLeg: return NameKind::kLowerLeg;
+    case B::kLeftFoot:
+    case B::kRightFoot: return NameKind::kFoot;
+    case B::kLeftToes:
+    case B::kRightToes: return NameKind::kToes;
+  }
+  return NameKind::kUnknown;
+}
+
+// What the automatic pass found, before overrides and the required-bone check.
+struct AutoResult {
+  RigMapping mapping;
+  std::vector<std::string> hips_problem;  // non-empty: the hips could not be decided (message parts)
+};
+
+void MapLeg(const RigStructure& rig, int upper, bool left, RigMapping& m) {
+  const HumanoidBone bones[4] = {left ? B::kLeftUpperLeg : B::kRightUpperLeg, left ? B::kLeftLowerLeg : B::kRightLowerLeg,
+                                 left ? B::kLeftFoot : B::kRightFoot, left ? B::kLeftToes : B::kRightToes};
+  int j = upper;
+  for (HumanoidBone bone : bones) {
+    if (j < 0) break;
+    m.joints[BoneIndex(bone)] = j;
+    j = rig.NextDown(j);
+  }
+}
+
+// Returns the joint the arm hangs from (the torso joint), or -1.
+int MapArm(const RigStructure& rig, int hand, bool left, RigMapping& m) {
+  const int lower = rig.PrevUp(hand);
+  const int upper = lower >= 0 ? rig.PrevUp(lower) : -1;
+  if (upper < 0) return -1;
+  m.joints[BoneIndex(left ? B::kLeftHand : B::kRightHand)] = hand;
+  m.joints[BoneIndex(left ? B::kLeftLowerArm : B::kRightLowerArm)] = lower;
+  m.joints[BoneIndex(left ? B::kLeftUpperArm : B::kRightUpperArm)] = upper;
+  const int above = rig.PrevUp(upper);
+  if (above < 0) return -1;
+  // A clavicle is a side joint between the torso and the upper arm; a torso joint (no side,
+  // the neck's parent) is where the arm starts directly.
+  if (rig.name(above).side != Side::kNone || rig.name(above).kind == NameKind::kShoulder) {
+    m.joints[BoneIndex(left ? B::kLeftShoulder : B::kRightShoulder)] = above;
+    return rig.PrevUp(above);
+  }
+  return above;
+}
+
+void MapTorso(const RigStructure& rig, int hips, int top, RigMapping& m) {
+  std::vector<int> chain = rig.TorsoChain(hips, top);
+  const int n = static_cast<int>(chain.size());
+  if (n == 0) return;
+  m.joints[BoneIndex(B::kSpine)] = chain[0];
+  if (n == 2) m.joints[BoneIndex(B::kChest)] = chain[1];
+  if (n >= 3) {
+    // The top joint (where arms and neck branch) is the upper chest, the one below it the
+    // chest; joints between spine and chest stay unmapped and fold into the spine when
+    // retargeting (Geno: spine Spine, chest Spine2, upperChest Spine3; Spine1 folded).
+    m.joints[BoneIndex(B::kUpperChest)] = chain[n - 1];
+    m.joints[BoneIndex(B::kChest)] = chain[n - 2];
+    if (n > 3) {
+      std::vector<int> folded(chain.begin() + 1, chain.end() - 2);
+      m.notes.push_back("torso of " + std::to_string(n) + " joints: spine " + Quoted(rig.skeleton().name(chain[0])) +
+                        ", chest " + Quoted(rig.skeleton().name(chain[n - 2])) + ", upperChest " +
+                        Quoted(rig.skeleton().name(chain[n - 1])) + "; " + JoinNames(rig.skeleton(), folded) +
+                        " left between spine and chest");
+    }
+  }
+}
+
+void MapNeckAndHead(const RigStructure& rig, int top, RigMapping& m) {
+  std::vector<int> chain = rig.NeckChain(top);  // joints above the top torso joint, head last
+  if (chain.empty()) return;
+  m.joints[BoneIndex(B::kHead)] = chain.back();
+  if (chain.size() >= 2) m.joints[BoneIndex(B::kNeck)] = chain.front();
+  if (chain.size() > 2) {
+    std::vector<int> extra(chain.begin() + 1, chain.end() - 1);
+    m.notes.push_back("neck of " + std::to_string(chain.size() - 1) + " joints: neck " +
+                      Quoted(rig.skeleton().name(chain.front())) + "; " + JoinNames(rig.skeleton(), extra) +
+                      " left between neck and head");
+  }
+}
+
+AutoResult MapAutomatically(const RigStructure& rig) {
+  AutoResult out;
+  RigMapping& m = out.mapping;
+  m.family = rig_names::DetectFamily(rig.skeleton());
+  const int leg_l = rig.BestByName(NameKind::kUpperLeg, Side::kLeft);
+  const int leg_r = rig.BestByName(NameKind::kUpperLeg, Side::kRight);
+  if (leg_l >= 0) MapLeg(rig, leg_l, true, m);
+  if (leg_r >= 0) MapLeg(rig, leg_r, false, m);
+  const int hand_l = rig.BestByName(NameKind::kHand, Side::kLeft);
+  const int hand_r = rig.BestByName(NameKind::kHand, Side::kRight);
+  const int top_l = hand_l >= 0 ? MapArm(rig, hand_l, true, m) : -1;
+  const int top_r = hand_r >= 0 ? MapArm(rig, hand_r, false, m) : -1;
+
+  // Hips: where the legs meet; else the one joint named like hips.
+  const std::vector<int> hips_named = rig.AllByName(NameKind::kHips);
+  int hips = -1;
+  if (leg_l >= 0 && leg_r >= 0) {
+    hips = rig.skeleton().HierarchyDistance(leg_l, leg_r) >= 0 ? rig.CommonAncestor(leg_l, leg_r) : -1;
+    if (hips < 0) {
+      if (hips_named.size() >= 2)
+        out.hips_problem.push_back("two candidates for the hips: " + JoinNames(rig.skeleton(), hips_named) +
+                                   " (the legs " + Quoted(rig.skeleton().name(leg_l)) + " and " +
+                                   Quoted(rig.skeleton().name(leg_r)) + " hang from different joints)");
+      else
+        out.hips_problem.push_back("the legs " + Quoted(rig.skeleton().name(leg_l)) + " and " +
+                                   Quoted(rig.skeleton().name(leg_r)) + " do not meet at a hips joint");
+    }
+  } else if (hips_named.size() == 1) {
+    hips = hips_named[0];
+  } else if (hips_named.size() >= 2) {
+    out.hips_problem.push_back("two candidates for the hips: " + JoinNames(rig.skeleton(), hips_named));
+  }
+  if (hips >= 0) m.joints[BoneIndex(B::kHips)] = hips;
+
+  // The torso top: the joint both arms hang from (the upper chest).
+  int top = top_l >= 0 ? top_l : top_r;
+  if (top_l >= 0 && top_r >= 0 && top_l != top_r) {
+    top = rig.CommonAncestor(top_l, top_r);
+    m.notes.push_back("the arms hang from different torso joints (" + Quoted(rig.skeleton().name(top_l)) + ", " +
+                      Quoted(rig.skeleton().name(top_r)) + "); the torso ends at " +
+                      (top >= 0 ? Quoted(rig.skeleton().name(top)) : std::string("none")));
+  }
+  if (hips >= 0 && top >= 0 && rig.IsAncestor(hips, top)) {
+    MapTorso(rig, hips, top, m);
+    MapNeckAndHead(rig, top, m);
+  } else if (hips >= 0) {
+    // No arms: the torso is the chain up from the hips, its named head (if any) on top.
+    const int head = rig.BestByName(NameKind::kHead, Side::kNone);
+    if (head >= 0 && rig.IsAncestor(hips, head)) {
+      std::vector<int> path = rig.TorsoChain(hips, head);
+      path.pop_back();
+      if (!path.empty()) m.joints[BoneIndex(B::kSpine)] = path.front();
+      m.joints[BoneIndex(B::kHead)] = head;
+    }
+  }
+  return out;
+}
+
+// Checks sides against the pose; swaps a pair whose names contradict the geometry.
+void CheckSides(const RigStructure& rig, const std::vector<Eigen::Vector3d>& pose, RigMapping& m) {
+  const Skeleton& skeleton = rig.skeleton();
+  if (pose.size() != static_cast<size_t>(skeleton.num_joints())) {
+    m.notes.push_back("no pose given: left and right decided by names");
+    return;
+  }
+  const std::optional<Eigen::Matrix3d> frame = rig.BodyFrame(m, pose);
+  if (!frame) {
+    m.notes.push_back(
+        "the pose does not show which way the rig faces (toes not ahead of the ankles, or the head not above the "
+        "hips): left and right decided by names");
+    return;
+  }
+  const Eigen::Vector3d left = frame->col(0);
+  struct Pair {
+    const char* what;
+    std::vector<HumanoidBone> left_bones;
+  };
+  const Pair pairs[] = {
+      {"leg", {B::kLeftUpperLeg, B::kLeftLowerLeg, B::kLeftFoot, B::kLeftToes}},
+      {"arm", {B::kLeftShoulder, B::kLeftUpperArm, B::kLeftLowerArm, B::kLeftHand}},
+  };
+  bool decided = false;
+  for (const Pair& pair : pairs) {
+    // Compare the limb's second joint (upper leg's knee side, upper arm): far enough from the
+    // midline to tell the sides apart even when the roots sit close together.
+    const int a = m.joint(pair.left_bones[1]);
+    const int b = m.joint(MirrorBone(pair.left_bones[1]));
+    if (a < 0 || b < 0) continue;
+    const double separation = (pose[a] - pose[b]).dot(left);
+    const double scale = std::max(1e-6, (pose[a] - pose[b]).norm());
+    if (std::abs(separation) < 0.2 * scale) {
+      m.notes.push_back(std::string("the ") + pair.what + "s are not apart sideways in the pose: their sides decided by names");
+      continue;
+    }
+    decided = true;
+    if (separation > 0) continue;
+    m.warnings.push_back(std::string("the names put ") + Quoted(skeleton.name(a)) + " on the left, but in the pose it is on the character's right (forward from toes ahead of ankles, up from the hips to the head): geometry wins, the " +
+                         pair.what + "s are swapped");
+    for (HumanoidBone bone : pair.left_bones) std::swap(m.joints[BoneIndex(bone)], m.joints[BoneIndex(MirrorBone(bone))]);
+  }
+  if (decided) m.notes.push_back("left and right checked against the pose (toes ahead of the ankles give forward)");
+}
+
+std::vector<std::string> ClosestJointNames(const Skeleton& skeleton, const std::string& name) {
+  std::vector<std::pair<int, std::string>> scored;
+  for (const Joint& j : skeleton.joints()) scored.emplace_back(rig_names::EditDistance(name, j.name), j.name);
+  std::sort(scored.begin(), scored.end());
+  std::vector<std::string> out;
+  for (size_t i = 0; i < scored.size() && i < 3; ++i) out.push_back(scored[i].second);
+  return out;
+}
+
+std::string ValidBoneNames() {
+  std::string out;
+  for (int i = 0; i < kNumHumanoidBones; ++i) out += (i ? ", " : "") + std::string(HumanoidBoneName(BoneAt(i)));
+  return out;
+}
+
+Status ApplyOverrides(const Skeleton& skeleton, const std::map<std::string, std::string>& overrides, RigMapping& m) {
+  std::map<int, std::string> sent_to;  // bone -> joint name, to catch two joints sent to one bone
+  for (const auto& [joint_name, bone_name] : overrides) {
+    const std::optional<int> joint = skeleton.Find(joint_name);
+    if (!joint) {
+      std::string closest;
+      for (const std::string& c : ClosestJointNames(skeleton, joint_name)) closest += (closest.empty() ? "" : ", ") + Quoted(c);
+      return InvalidData("rig map: no joint named " + Quoted(joint_name) + " in the skeleton (closest: " + closest + ")");
+    }
+    for (int& j : m.joints)
+      if (j == *joint) j = -1;
+    if (bone_name.empty()) {
+      m.notes.push_back("map: " + Quoted(joint_name) + " left unmapped");
+      continue;
+    }
+    const std::optional<HumanoidBone> bone = ParseHumanoidBone(bone_name);
+    if (!bone)
+      return InvalidData("rig map: " + Quoted(joint_name) + " -> " + Quoted(bone_name) +
+                         ": no such humanoid bone (valid: " + ValidBoneNames() + ")");
+    if (auto it = sent_to.find(BoneIndex(*bone)); it != sent_to.end())
+      return InvalidData("rig map: two joints sent to " + std::string(HumanoidBoneName(*bone)) + ": " +
+                         Quoted(it->second) + " and " + Quoted(joint_name));
+    sent_to[BoneIndex(*bone)] = joint_name;
+    m.joints[BoneIndex(*bone)] = *joint;
+    m.notes.push_back("map: " + Quoted(joint_name) + " -> " + HumanoidBoneName(*bone));
+  }
+  return OkStatus();
+}
+
+Status CheckRequired(const RigStructure& rig, const AutoResult& automatic, const RigMapping& m,
+                     const std::map<std::string, std::string>& overrides) {
+  std::vector<HumanoidBone> missing;
+  for (int i = 0; i < kNumHumanoidBones; ++i)
+    if (IsRequiredBone(BoneAt(i)) && !m.has(BoneAt(i))) missing.push_back(BoneAt(i));
+  if (missing.empty()) return OkStatus();
+  std::string names;
+  for (HumanoidBone b : missing) names += (names.empty() ? "" : ", ") + std::string(HumanoidBoneName(b));
+  const bool no_limbs = rig.AllByName(NameKind::kUpperLeg).empty() && rig.AllByName(NameKind::kHand).empty() &&
+                        overrides.empty();
+  if (no_limbs)
+    return InvalidData("not a humanoid rig: no joint is named like a leg (UpLeg, UpperLeg, Thigh, Hip) or a hand "
+                       "(Hand, Wrist); required bones missing: " +
+                       names);
+  std::string detail;
+  const bool hips_missing = std::find(missing.begin(), missing.end(), B::kHips) != missing.end();
+  if (hips_missing && !automatic.hips_problem.empty()) {
+    for (const std::string& p : automatic.hips_problem) detail += "; " + p;
+  }
+  for (HumanoidBone b : missing) {
+    if (b == B::kHips && !automatic.hips_problem.empty()) continue;
+    detail += "; no " + std::string(HumanoidBoneName(b)) + ": candidates considered: " +
+              JoinNames(rig.skeleton(), rig.AllByName(KindOfBone(b)));
+  }
+  return InvalidData("required humanoid bones missing: " + names + detail + " (a --map can name them)");
+}
+
+// Notes where a joint's words propose another bone than the structure gave it ("L_Shoulder"
+// is the upper arm when its parent is the collar).
+void NoteNameStructureDisagreements(const RigStructure& rig, RigMapping& m) {
+  for (int i = 0; i < kNumHumanoidBones; ++i) {
+    const int j = m.joints[i];
+    if (j < 0) continue;
+    const NameKind said = rig.name(j).kind;
+    if (said == NameKind::kUnknown || said == KindOfBone(BoneAt(i))) continue;
+    if (said == NameKind::kSpine && KindOfBone(BoneAt(i)) == NameKind::kHips) continue;
+    m.notes.push_back(Quoted(rig.skeleton().name(j)) + " is " + HumanoidBoneName(BoneAt(i)) +
+                      " by the hierarchy (its name suggests another bone)");
+  }
+}
+
+}  // namespace
+
+int RigMapping::BoneOfJoint(int joint) const {
+  for (int i = 0; i < kNumHumanoidBones; ++i)
+    if (joints[i] == joint) return i;
+  return -1;
+}
+
+Result<RigMapping> MapHumanoid(const Skeleton& skeleton, const std::vector<Eigen::Vector3d>& pose_world_positions,
+                               const RigMapOptions& options) {
+  const RigStructure rig(skeleton);
+  AutoResult automatic = MapAutomatically(rig);
+  RigMapping& m = automatic.mapping;
+  CheckSides(rig, pose_world_positions, m);
+  NoteNameStructureDisagreements(rig, m);
+  RETURN_IF_ERROR(ApplyOverrides(skeleton, options.overrides, m));
+  RETURN_IF_ERROR(CheckRequired(rig, automatic, m, options.overrides));
+  return std::move(m);
+}
+
+std::string UnmappedJointReason(const Skeleton& skeleton, const RigMapping& mapping, int joint) {
+  if (mapping.BoneOfJoint(joint) >= 0) return "";
+  const JointName name = rig_names::ParseJointName(skeleton.name(joint));
+  if (!name.helper.empty()) return name.helper;
+  const RigStructure rig(skeleton);
+  const int hips = mapping.joint(B::kHips);
+  const int head = mapping.joint(B::kHead);
+  if (hips >= 0 && rig.IsAncestor(joint, hips)) return "root above the hips";
+  if (hips >= 0 && head >= 0 && rig.IsAncestor(hips, joint) && rig.IsAncestor(joint, head))
+    return name.lower_back ? "lower-back helper (spine offset)" : "extra spine or neck joint (folded into its neighbours)";
+  return "not a canonical bone";
+}
+
+Result<std::map<std::string, std::string>> ParseRigMapJson(const std::string& json_text, const std::string& origin) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::parse_error& e) {
+    return InvalidData(origin + ": not valid JSON: " + e.what());
+  }
+  if (!doc.is_object())
+    return InvalidData(origin + ": a rig map is a JSON object {\"joint\": \"humanoid bone\", ...}");
+  std::map<std::string, std::string> out;
+  for (const auto& [joint, bone] : doc.items()) {
+    if (bone.is_null()) {
+      out[joint] = "";
+    } else if (bone.is_string()) {
+      out[joint] = bone.get<std::string>();
+    } else {
+      return InvalidData(origin + ": joint " + Quoted(joint) + ": the value must be a humanoid bone name or \"\"");
+    }
+  }
+  return out;
+}
+
+}  // namespace mocapfill
