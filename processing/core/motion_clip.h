@@ -21,11 +21,6 @@ namespace mocapfill {
 struct JointKeys {
   std::vector<int> rotation_frames;
   std::vector<int> translation_frames;
-  // TEMP (merged from exact-keys): exact key times and values as the source had them.
-  std::vector<double> rotation_times_s;
-  std::vector<Eigen::Quaterniond> rotation_values;
-  std::vector<double> translation_times_s;
-  std::vector<Eigen::Vector3d> translation_values;
   bool empty() const { return rotation_frames.empty() && translation_frames.empty(); }
 };
 
@@ -49,8 +44,7 @@ struct MotionClip {
   static MotionClip RestPose(const Skeleton& skeleton, int frames, double rate_hz);
 
   double duration_s() const { return num_frames > 1 ? (num_frames - 1) / sample_rate_hz : 0.0; }
-  std::vector<double> frame_times_s;  // TEMP (merged from exact-keys)
-  double time_s(int frame) const { return frame_times_s.empty() ? frame / sample_rate_hz : frame_times_s[frame]; }
+  double time_s(int frame) const { return frame / sample_rate_hz; }
 
   Eigen::Quaterniond& rotation(int frame, int joint) { return rotations[frame * num_joints + joint]; }
   const Eigen::Quaterniond& rotation(int frame, int joint) const { return rotations[frame * num_joints + joint]; }
