@@ -55,8 +55,11 @@ void ScaleScene(Scene& scene, double scale) {
     if (joint.end_site) *joint.end_site *= scale;
     if (joint.bvh_offset) *joint.bvh_offset *= scale;
   }
-  for (MotionClip& clip : scene.clips)
+  for (MotionClip& clip : scene.clips) {
     for (Eigen::Vector3d& t : clip.translations) t *= scale;
+    for (JointKeys& keys : clip.keys)
+      for (Eigen::Vector3d& t : keys.translation_values) t *= scale;
+  }
   for (Mesh& mesh : scene.meshes)
     for (MeshPrimitive& prim : mesh.primitives)
       for (Eigen::Vector3f& p : prim.positions) p *= static_cast<float>(scale);
@@ -77,6 +80,10 @@ void ConvertZUpToYUp(Scene& scene) {
       for (int f = 0; f < clip.num_frames; ++f) {
         clip.translation(f, j) = cm * clip.translation(f, j);
         clip.rotation(f, j) = (c * clip.rotation(f, j)).normalized();
+      }
+      if (static_cast<size_t>(j) < clip.keys.size()) {
+        for (Eigen::Vector3d& t : clip.keys[j].translation_values) t = cm * t;
+        for (Eigen::Quaterniond& q : clip.keys[j].rotation_values) q = (c * q).normalized();
       }
     }
   }

@@ -98,7 +98,8 @@ void AddKeyFrames(const std::vector<double>& ticks, double shift, double tps, do
   }
 }
 
-void SortUnique(std::vector<int>& v) {
+template <typename T>
+void SortUnique(std::vector<T>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
@@ -176,24 +177,31 @@ Result<MotionClip> ConvertAnimation(const aiAnimation& anim, int index, const No
     if (std::none_of(chain.begin(), chain.end(), [&](int v) { return track_of_node[v] >= 0; })) continue;
     bool scale_dropped = false;
     const Eigen::Vector3d& rest_scale = skeleton.joint(j).rest_scale;
-    for (int f = 0; f < frames; ++f) {
-      const double tick = shift + clip.time_s(f) * tps;
+    const auto local_at = [&](double tick) {
       Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
       for (int v : chain)
         local = local * (track_of_node[v] < 0 ? g.local[v] : TrackMatrixAt(tracks[track_of_node[v]], node_rest[v], tick));
-      const Trs trs = Decompose(local);
+      return Decompose(local);
+    };
+    for (int f = 0; f < frames; ++f) {
+      const Trs trs = local_at(shift + clip.time_s(f) * tps);
       clip.rotation(f, j) = trs.rotation;
       clip.translation(f, j) = trs.translation;
       scale_dropped |= (trs.scale - rest_scale).norm() > kScaleDeviation * rest_scale.norm();
     }
     if (scale_dropped)
       warnings.push_back(what + ": scale animation of joint '" + skeleton.name(j) + "' is not supported; rest scale kept");
+    // Key ticks of the nodes composing the joint: the exact keys are the composed local
+    // transform at each of them.
+    std::vector<double> rotation_ticks, translation_ticks;
     for (size_t c = 0; c < chain.size(); ++c) {
       if (track_of_node[chain[c]] < 0) continue;
       const Track& track = tracks[track_of_node[chain[c]]];
       JointKeys& keys = clip.keys[j];
       AddKeyFrames(track.rot_t, shift, tps, rate_hz, frames, keys.rotation_frames);
       AddKeyFrames(track.pos_t, shift, tps, rate_hz, frames, keys.translation_frames);
+      rotation_ticks.insert(rotation_ticks.end(), track.rot_t.begin(), track.rot_t.end());
+      translation_ticks.insert(translation_ticks.end(), track.pos_t.begin(), track.pos_t.end());
       // A rotation or scale above an offset (an FBX pivot helper) moves the joint's origin.
       const bool offset_below = std::any_of(chain.begin() + c + 1, chain.end(), [&](int v) {
         return g.local[v].block<3, 1>(0, 3).squaredNorm() > 0.0;
@@ -201,7 +209,20 @@ Result<MotionClip> ConvertAnimation(const aiAnimation& anim, int index, const No
       if (offset_below) {
         AddKeyFrames(track.rot_t, shift, tps, rate_hz, frames, keys.translation_frames);
         AddKeyFrames(track.scl_t, shift, tps, rate_hz, frames, keys.translation_frames);
+        translation_ticks.insert(translation_ticks.end(), track.rot_t.begin(), track.rot_t.end());
+        translation_ticks.insert(translation_ticks.end(), track.scl_t.begin(), track.scl_t.end());
       }
+    }
+    SortUnique(rotation_ticks);
+    SortUnique(translation_ticks);
+    JointKeys& keys = clip.keys[j];
+    for (double tick : rotation_ticks) {
+      keys.rotation_times_s.push_back((tick - shift) / tps);
+      keys.rotation_values.push_back(local_at(tick).rotation.normalized());
+    }
+    for (double tick : translation_ticks) {
+      keys.translation_times_s.push_back((tick - shift) / tps);
+      keys.translation_values.push_back(local_at(tick).translation);
     }
   }
   for (int j = 0; j < clip.num_joints; ++j) {

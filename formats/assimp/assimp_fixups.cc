@@ -68,8 +68,11 @@ int BakeUniformJointScales(Scene& scene) {
     Joint& joint = skeleton.mutable_joint(j);
     const double above = joint.parent == kNoParent ? 1.0 : accumulated[joint.parent];
     joint.rest_translation *= above;
-    for (MotionClip& clip : scene.clips)
+    for (MotionClip& clip : scene.clips) {
       for (int f = 0; f < clip.num_frames; ++f) clip.translation(f, j) *= above;
+      if (static_cast<size_t>(j) < clip.keys.size())
+        for (Eigen::Vector3d& t : clip.keys[j].translation_values) t *= above;
+    }
     accumulated[j] = above;
     if (const auto factor = UniformFactor(joint.rest_scale)) {
       accumulated[j] = above * *factor;

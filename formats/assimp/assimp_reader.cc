@@ -176,7 +176,11 @@ void MarkAnimatedTranslations(Scene& scene) {
   for (MotionClip& clip : scene.clips) {
     clip.DetectAnimatedTranslations(kStillTranslationM);
     for (int j = 0; j < clip.num_joints; ++j)
-      if (!clip.translation_animated[j]) clip.keys[j].translation_frames.clear();
+      if (!clip.translation_animated[j]) {
+        clip.keys[j].translation_frames.clear();
+        clip.keys[j].translation_times_s.clear();
+        clip.keys[j].translation_values.clear();
+      }
   }
 }
 

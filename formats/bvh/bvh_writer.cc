@@ -183,6 +183,10 @@ Result<std::string> WriteBvh(const Scene& scene, const ExportOptions& options) {
   if (scene.clips.empty()) rest_pose = MotionClip::RestPose(skeleton, 1, 30.0);
   const MotionClip& clip = scene.clips.empty() ? rest_pose : scene.clips.front();
   RETURN_IF_ERROR(clip.Validate(skeleton));
+  if (!clip.uniform())
+    return InvalidArgument("clip '" + clip.name + "' has explicit (non-uniform) frame times; BVH holds uniformly "
+                           "sampled frames only: write .glb/.gltf to keep the key times, or resample the clip to a "
+                           "frame rate first");
   // A skeleton that came from BVH (directly, or through glTF extras) keeps every joint's
   // layout, including joints that had no channels; others get the default layout.
   bool bvh_layouts = scene.source.format == "bvh";

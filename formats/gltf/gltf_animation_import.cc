@@ -1,5 +1,5 @@
 // glTF animations to MotionClips: sampler checks, frame-rate choice, resampling onto the
-// frame grid, keyed frames.
+// frame grid, keyed frames and the exact key times and values.
 #include "formats/gltf/tinygltf_private.h"
 
 #include <algorithm>
@@ -171,21 +171,60 @@ void SettleTranslation(const Skeleton& skeleton, int j, MotionClip& clip) {
     for (int f = 0; f < clip.num_frames; ++f) clip.translation(f, j) = rest;
 }
 
-void ApplyRecordedKeys(const RecordedClip& recorded, const Skeleton& skeleton, MotionClip& clip,
-                       const std::string& label, std::vector<std::string>& warnings) {
+// The keys our exporter recorded (asset.extras.mocapfill) for a dense file: key frames index
+// the written samples, which are the channels' keys (one per written frame). The exact keys
+// are those samples' times and values; the keyed frames are the same indices when the clip
+// was uniform (the grid is the recorded rate), else the grid frames nearest those times.
+void ApplyRecordedKeys(const RecordedClip& recorded, const Skeleton& skeleton, const std::vector<JointTrack>& tracks,
+                       MotionClip& clip, const std::string& label, std::vector<std::string>& warnings) {
+  std::vector<const KeyTrack*> rotation(clip.num_joints, nullptr), translation(clip.num_joints, nullptr);
+  for (const JointTrack& t : tracks) {
+    if (t.path == Path::kRotation) rotation[t.joint] = &t.track;
+    if (t.path == Path::kTranslation) translation[t.joint] = &t.track;
+  }
+  // The written samples' times: every channel of our files shares them.
+  const std::vector<double>* written_times = nullptr;
+  for (const JointTrack& t : tracks)
+    if (t.path != Path::kScale && (!written_times || t.track.times_s.size() > written_times->size()))
+      written_times = &t.track.times_s;
+  const int written = written_times ? static_cast<int>(written_times->size()) : 0;
   std::vector<JointKeys> keys(clip.num_joints);
   for (const auto& [name, joint_keys] : recorded.keys) {
     const auto j = skeleton.Find(name);
-    const auto valid = [&](const std::vector<int>& frames) {
+    const auto valid = [&](const std::vector<int>& frames, const KeyTrack* track) {
+      const int limit = recorded.explicit_frame_times ? written : clip.num_frames;
+      if (track && static_cast<int>(track->times_s.size()) != written) return false;
       for (size_t k = 0; k < frames.size(); ++k)
-        if (frames[k] < 0 || frames[k] >= clip.num_frames || (k && frames[k] <= frames[k - 1])) return false;
+        if (frames[k] < 0 || frames[k] >= limit || frames[k] >= written || (k && frames[k] <= frames[k - 1]))
+          return false;
       return true;
     };
-    if (!j || !valid(joint_keys.rotation_frames) || !valid(joint_keys.translation_frames)) {
+    if (!j || !valid(joint_keys.rotation_frames, rotation[*j]) ||
+        !valid(joint_keys.translation_frames, translation[*j])) {
       warnings.push_back(label + ": recorded keys in asset.extras.mocapfill do not match the file; keys taken from the channels");
       return;
     }
-    keys[*j] = joint_keys;
+    JointKeys& k = keys[*j];
+    const std::vector<Eigen::Quaterniond> rotations =
+        rotation[*j] ? KeyQuaternions(*rotation[*j]) : std::vector<Eigen::Quaterniond>{};
+    const std::vector<Eigen::Vector3d> translations =
+        translation[*j] ? KeyVectors(*translation[*j]) : std::vector<Eigen::Vector3d>{};
+    for (int f : joint_keys.rotation_frames) {
+      k.rotation_times_s.push_back((*written_times)[f]);
+      k.rotation_values.push_back(rotation[*j] ? rotations[f] : clip.rotation(0, *j));
+    }
+    for (int f : joint_keys.translation_frames) {
+      k.translation_times_s.push_back((*written_times)[f]);
+      k.translation_values.push_back(translation[*j] ? translations[f] : clip.translation(0, *j));
+    }
+    if (recorded.explicit_frame_times) {
+      k.rotation_frames = KeyedFrames({k.rotation_times_s, {}, 4, Interpolation::kLinear}, clip.sample_rate_hz, clip.num_frames);
+      k.translation_frames =
+          KeyedFrames({k.translation_times_s, {}, 3, Interpolation::kLinear}, clip.sample_rate_hz, clip.num_frames);
+    } else {
+      k.rotation_frames = joint_keys.rotation_frames;
+      k.translation_frames = joint_keys.translation_frames;
+    }
   }
   clip.keys = std::move(keys);
 }
@@ -216,10 +255,14 @@ Result<MotionClip> ImportAnimation(const tinygltf::Model& model, const SkeletonI
       const auto samples = SampleRotation(t.track, rate, clip.num_frames);
       for (int f = 0; f < clip.num_frames; ++f) clip.rotation(f, t.joint) = samples[f];
       clip.keys[t.joint].rotation_frames = KeyedFrames(t.track, rate, clip.num_frames);
+      clip.keys[t.joint].rotation_times_s = t.track.times_s;
+      clip.keys[t.joint].rotation_values = KeyQuaternions(t.track);
     } else if (t.path == Path::kTranslation) {
       const auto samples = SampleVector3(t.track, rate, clip.num_frames);
       for (int f = 0; f < clip.num_frames; ++f) clip.translation(f, t.joint) = samples[f];
       clip.keys[t.joint].translation_frames = KeyedFrames(t.track, rate, clip.num_frames);
+      clip.keys[t.joint].translation_times_s = t.track.times_s;
+      clip.keys[t.joint].translation_values = KeyVectors(t.track);
       has_translation[t.joint] = 1;
     } else {
       const Eigen::Vector3d rest = skel.joint(t.joint).rest_scale;
@@ -236,7 +279,7 @@ Result<MotionClip> ImportAnimation(const tinygltf::Model& model, const SkeletonI
     if (has_translation[j]) SettleTranslation(skel, j, clip);
   clip.MakeContinuous();
   const bool rate_as_recorded = recorded && (request.rate_hz <= 0 || request.rate_hz == recorded->sample_rate_hz);
-  if (rate_as_recorded && recorded->has_keys) ApplyRecordedKeys(*recorded, skel, clip, label, warnings);
+  if (rate_as_recorded && recorded->has_keys) ApplyRecordedKeys(*recorded, skel, tracks, clip, label, warnings);
   RETURN_IF_ERROR(clip.Validate(skel).WithContext(label));
   return clip;
 }

@@ -72,7 +72,10 @@ struct RecordedClip {
   std::string name;
   double sample_rate_hz = 0.0;
   bool has_keys = false;                  // sparse keys were recorded (dense clips record none)
-  std::map<std::string, JointKeys> keys;  // by joint name
+  // The clip had explicit (non-uniform) frame times: the recorded key frames index the
+  // written samples (channel keys), not frames of sample_rate_hz.
+  bool explicit_frame_times = false;
+  std::map<std::string, JointKeys> keys;  // by joint name (frames only)
 };
 
 struct AnimationRequest {

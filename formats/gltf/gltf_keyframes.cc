@@ -96,6 +96,18 @@ std::vector<int> KeyedFrames(const KeyTrack& track, double rate_hz, int num_fram
   return frames;
 }
 
+std::vector<Eigen::Vector3d> KeyVectors(const KeyTrack& track) {
+  std::vector<Eigen::Vector3d> out(track.times_s.size());
+  for (size_t k = 0; k < out.size(); ++k) out[k] = {Value(track, k, 0), Value(track, k, 1), Value(track, k, 2)};
+  return out;
+}
+
+std::vector<Eigen::Quaterniond> KeyQuaternions(const KeyTrack& track) {
+  std::vector<Eigen::Quaterniond> out(track.times_s.size());
+  for (size_t k = 0; k < out.size(); ++k) out[k] = KeyQuaternion(track, k);
+  return out;
+}
+
 std::vector<Eigen::Vector3d> SampleVector3(const KeyTrack& track, double rate_hz, int num_frames) {
   const std::vector<double> positions = KeyPositions(track.times_s, rate_hz);
   SegmentFinder finder(positions);

@@ -35,6 +35,11 @@ int64_t FrameCount(double last_time_s, double rate_hz);
 // unique, clamped to [0, num_frames).
 std::vector<int> KeyedFrames(const KeyTrack& track, double rate_hz, int num_frames);
 
+// The value part of every key (CUBICSPLINE: the middle of each triplet) as the clip holds
+// it: vectors as stored, quaternions normalised (x, y, z, w order in the track).
+std::vector<Eigen::Vector3d> KeyVectors(const KeyTrack& track);
+std::vector<Eigen::Quaterniond> KeyQuaternions(const KeyTrack& track);
+
 // Samples a vector track (translation, scale) at frames 0..num_frames-1 of `rate_hz`.
 // Before the first key and after the last the end values hold.
 std::vector<Eigen::Vector3d> SampleVector3(const KeyTrack& track, double rate_hz, int num_frames);

@@ -113,6 +113,7 @@ RecordedClip ReadRecordedClip(const tinygltf::Value& entry) {
   clip.name = GetString(entry, "name");
   clip.sample_rate_hz = GetNumber(entry, "sample_rate_hz");
   if (!std::isfinite(clip.sample_rate_hz) || clip.sample_rate_hz < 0 || clip.sample_rate_hz > 10000) clip.sample_rate_hz = 0;
+  clip.explicit_frame_times = GetString(entry, "frame_times") == "explicit";
   const tinygltf::Value& keys = entry.Get("keys");
   if (!keys.IsObject()) return clip;
   clip.has_keys = true;

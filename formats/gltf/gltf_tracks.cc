@@ -16,6 +16,17 @@ Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_h
   return OkStatus();
 }
 
+Status PackExplicitFrameTimes(const std::string& clip_name, const double* times_s, size_t frames, float* times) {
+  for (size_t f = 0; f < frames; ++f) {
+    times[f] = static_cast<float>(times_s[f]);
+    if (f > 0 && times[f] <= times[f - 1])
+      return Unsupported("clip '" + clip_name + "': frame times " + std::to_string(f - 1) + " and " +
+                         std::to_string(f) + " (" + std::to_string(times_s[f - 1]) + " s and " +
+                         std::to_string(times_s[f]) + " s) are equal in float32");
+  }
+  return OkStatus();
+}
+
 namespace {
 
 // (a0 + a2) + (a1 + a3) in every lane.

@@ -31,6 +31,10 @@ struct ClipTrackLayout {
 // frames round to the same float32 time (the clip is too long for its rate).
 Status PackFrameTimes(const std::string& clip_name, size_t frames, double rate_hz, float* times);
 
+// Explicit frame times (MotionClip::frame_times_s, seconds) rounded to float32; fails when
+// two of them round to the same float32 time.
+Status PackExplicitFrameTimes(const std::string& clip_name, const double* times_s, size_t frames, float* times);
+
 // One rotation as the track stores it: normalised (unless its squared length is within
 // kRotationUnitTolerance of 1 already, as a composed rotation's is to an ulp or two: dividing by
 // such a length moves a value by less than the float32 rounding after it), turned to the

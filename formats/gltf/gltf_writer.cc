@@ -122,7 +122,12 @@ Status AddAnimation(const MotionClip& clip, BufferWriter& buffer, tinygltf::Mode
 
   ClipViews views;
   float* times = buffer.AddFloatView(n, views.time);
-  RETURN_IF_ERROR(PackFrameTimes(clip.name, n, clip.sample_rate_hz, times));
+  // Uniform clips: frame f at f / rate; others: their explicit sample times.
+  if (clip.uniform()) {
+    RETURN_IF_ERROR(PackFrameTimes(clip.name, n, clip.sample_rate_hz, times));
+  } else {
+    RETURN_IF_ERROR(PackExplicitFrameTimes(clip.name, clip.frame_times_s.data(), n, times));
+  }
   const double first_s = times[0], last_s = times[n - 1];
   WriteRotations(clip, buffer.AddFloatView(n * 4 * layout.joints, views.rotation));
   if (!moving.empty()) WriteTranslations(clip, moving, buffer.AddFloatView(n * 3 * moving.size(), views.translation));
@@ -160,6 +165,9 @@ Value ClipExtras(const MotionClip& clip, const std::vector<JointKeys>* sparse_ke
   entry["name"] = Value(clip.name);
   entry["sample_rate_hz"] = Value(clip.sample_rate_hz);
   entry["frames"] = Value(clip.num_frames);
+  // Explicit sample times live in the time accessor; recorded key frames then index the
+  // written samples. Uniform clips record nothing more (their bytes stay as they were).
+  if (!clip.uniform()) entry["frame_times"] = Value(std::string("explicit"));
   if (sparse_keys != nullptr) {
     Value::Object keys;
     for (int j = 0; j < clip.num_joints; ++j) {

@@ -18,6 +18,7 @@ Status ClipAnalysisOptions::Validate() const {
 Result<ClipAnalysis> AnalyzeClip(const Skeleton& skeleton, const MotionClip& clip, const ClipAnalysisOptions& options) {
   RETURN_IF_ERROR(options.Validate());
   RETURN_IF_ERROR(clip.Validate(skeleton));
+  RETURN_IF_ERROR(RequireUniform(clip, "analyze"));
   if (options.master_joint < -1 || options.master_joint >= skeleton.num_joints())
     return InvalidArgument("analysis: master joint index " + std::to_string(options.master_joint) + " is out of range");
   ClipAnalysis out;

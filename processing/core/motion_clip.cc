@@ -74,7 +74,40 @@ Status MotionClip::Validate(const Skeleton& skeleton) const {
       for (size_t k = 0; k < frames->size(); ++k)
         if ((*frames)[k] < 0 || (*frames)[k] >= num_frames || (k > 0 && (*frames)[k] <= (*frames)[k - 1]))
           return Internal("clip '" + name + "' has unsorted or out-of-range keys");
+  if (!frame_times_s.empty()) {
+    if (frame_times_s.size() != static_cast<size_t>(num_frames))
+      return InvalidData("clip '" + name + "' has " + std::to_string(frame_times_s.size()) + " frame times for " +
+                         std::to_string(num_frames) + " frames");
+    if (frame_times_s[0] != 0.0) return InvalidData("clip '" + name + "': the first frame time is not 0");
+    for (size_t f = 1; f < frame_times_s.size(); ++f)
+      if (!std::isfinite(frame_times_s[f]) || !(frame_times_s[f] > frame_times_s[f - 1]))
+        return InvalidData("clip '" + name + "': frame times are not finite and strictly increasing at frame " +
+                           std::to_string(f));
+  }
+  const auto times_ok = [](const std::vector<double>& times) {
+    for (size_t k = 0; k < times.size(); ++k)
+      if (!std::isfinite(times[k]) || times[k] < 0.0 || (k > 0 && !(times[k] > times[k - 1]))) return false;
+    return true;
+  };
+  for (int j = 0; j < num_joints; ++j) {
+    const JointKeys& k = keys[j];
+    if (k.rotation_times_s.size() != k.rotation_values.size() ||
+        k.translation_times_s.size() != k.translation_values.size() || !times_ok(k.rotation_times_s) ||
+        !times_ok(k.translation_times_s))
+      return Internal("clip '" + name + "' has inconsistent exact keys for joint '" + skeleton.name(j) + "'");
+    for (const Eigen::Quaterniond& q : k.rotation_values)
+      if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-6)
+        return Internal("clip '" + name + "' has a non-finite or non-unit exact rotation key");
+    for (const Eigen::Vector3d& t : k.translation_values)
+      if (!t.allFinite()) return Internal("clip '" + name + "' has a non-finite exact translation key");
+  }
   return OkStatus();
+}
+
+Status RequireUniform(const MotionClip& clip, const std::string& stage) {
+  if (clip.uniform()) return OkStatus();
+  return InvalidArgument(stage + ": clip '" + clip.name +
+                         "' has explicit (non-uniform) frame times; resample it to a frame rate first");
 }
 
 }  // namespace mocapfill

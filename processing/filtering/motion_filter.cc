@@ -19,6 +19,7 @@ Result<MotionClip> MultiresFilter(const Skeleton& skeleton, const MotionClip& cl
                                   const MultiresFilterOptions& options) {
   RETURN_IF_ERROR(options.Validate());
   RETURN_IF_ERROR(clip.Validate(skeleton));
+  RETURN_IF_ERROR(RequireUniform(clip, "filter"));
   for (int j : options.joints)
     if (j < 0 || j >= skeleton.num_joints())
       return InvalidArgument("multires filter: joint index " + std::to_string(j) + " is out of range");

@@ -36,6 +36,10 @@ int ResampledFrameCount(const MotionClip& clip, double rate_hz);
 // (within 1e-9 relative) the clip is returned unchanged.
 // Errors: invalid options (kInvalidArgument); a clip with no frames or an invalid rate
 // (kInvalidData).
+// A clip with explicit frame times (not uniform) is sampled at the same output times by
+// its frame times: slerp between the neighbouring frames, translations linear or a cubic
+// Hermite with finite-difference tangents; keys go to the output frame nearest their
+// frame's time. The output is uniform (even when the nominal rate equals options.rate_hz).
 Result<MotionClip> ResampleClip(const MotionClip& clip, const ResampleOptions& options);
 
 }  // namespace mocapfill

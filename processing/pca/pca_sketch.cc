@@ -16,6 +16,7 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
 
 Status CheckSketch(const PcaModel& model, const Skeleton& skeleton, const MotionClip& sketch) {
+  RETURN_IF_ERROR(RequireUniform(sketch, "pca"));
   RETURN_IF_ERROR(ValidatePcaModel(model).WithContext("pca model"));
   if (model.window_frames != 1)
     return InvalidArgument("filling and fitting need a pose model; this model has windows of " +

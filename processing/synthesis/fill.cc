@@ -223,6 +223,7 @@ Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions&
                                     const std::vector<SketchPositionKey>& position_keys) {
   RETURN_IF_ERROR(options.Validate());
   if (sketch.num_frames < 1) return InvalidData("the sketch has no frames");
+  RETURN_IF_ERROR(RequireUniform(sketch, "fill"));
   if (std::abs(sketch.sample_rate_hz - db_.rate_hz()) > 1e-9 * db_.rate_hz())
     return InvalidArgument("the sketch must be resampled to the database rate first");
   if (options.method == FillMethod::kPca) return FillPca(sketch, options);

@@ -71,7 +71,11 @@ MotionClip ToDatabaseClip(const SkeletonMapping& mapping, const Skeleton& databa
     }
     clip.translation_animated[d] = sketch_clip.translation_animated[s];
     clip.keys[d] = sketch_clip.keys[s];
-    if (!sketch_clip.translation_animated[s]) clip.keys[d].translation_frames.clear();
+    if (!sketch_clip.translation_animated[s]) {
+      clip.keys[d].translation_frames.clear();
+      clip.keys[d].translation_times_s.clear();
+      clip.keys[d].translation_values.clear();
+    }
   }
   clip.MakeContinuous();
   return clip;

@@ -78,6 +78,7 @@ bool IsRootVelocityFeature(int feature) {
 Result<SketchSignals> MakeSketchSignals(const MotionDatabase& db, const MotionClip& sketch) {
   const Skeleton& skeleton = db.skeleton();
   RETURN_IF_ERROR(sketch.Validate(skeleton).WithContext("sketch"));
+  RETURN_IF_ERROR(RequireUniform(sketch, "sketch"));
   const int nj = skeleton.num_joints(), root = db.root_joint();
   SketchSignals s;
   s.frames = sketch.num_frames;
