@@ -139,8 +139,8 @@ int Fail(const Status& status, Stage stage) {
 Status MeasureWrittenKeys(const std::string& path, const Scene& sketch, SketchFillResult& result) {
   ASSIGN_OR_RETURN(Scene written, ImportFile(path));
   if (written.clips.empty()) return Internal(path + ": the written file has no animation to check");
-  const MotionClip& sketch_clip = sketch.clips.front();
-  result.key_checks = CheckKeys(sketch.skeleton, written.clips.front(), sketch_clip);
+  const MotionClip& sketch_clip = result.keyed_sketch;
+  result.key_checks = CheckKeys(written.skeleton, written.clips.front(), sketch.skeleton, sketch_clip);
   result.key_error_mean_deg = result.key_error_max_deg = 0.0;
   int count = 0;
   for (const KeyCheck& k : result.key_checks) {

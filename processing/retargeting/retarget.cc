@@ -263,7 +263,13 @@ Result<HumanoidRig> HumanoidRig::Make(const Skeleton& skeleton, const RigMapping
     for (HumanoidBone next : DirectionBones(bone)) {
       if (!mapping.has(next)) continue;
       if ((g.positions[mapping.joint(next)] - g.positions[j]).norm() < kMinSegmentM) continue;
-      if (skeleton.parent(mapping.joint(next)) != j) rig.aim_joint_[b] = mapping.joint(next);
+      // Aim only across joints no canonical bone names (CMU's Neck1); through a mapped bone
+      // (Spine1 -> Neck -> Neck1 -> Head, where Neck sits on Spine1) the line is that
+      // bone's business.
+      bool only_unmapped = true;
+      for (int p = skeleton.parent(mapping.joint(next)); p != j && p != kNoParent; p = skeleton.parent(p))
+        only_unmapped = only_unmapped && mapping.BoneOfJoint(p) < 0;
+      if (skeleton.parent(mapping.joint(next)) != j && only_unmapped) rig.aim_joint_[b] = mapping.joint(next);
       break;
     }
     Matrix3d rest_frame, canonical_frame;

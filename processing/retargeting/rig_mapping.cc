@@ -137,16 +137,32 @@ void MapNeckAndHead(const RigStructure& rig, int top, RigMapping& m) {
   }
 }
 
-AutoResult MapAutomatically(const RigStructure& rig) {
+// The joint a user override sends to `bone`, or -1.
+int OverriddenJoint(const Skeleton& skeleton, const std::map<std::string, std::string>& overrides, B bone) {
+  for (const auto& [joint, target] : overrides) {
+    const auto parsed = ParseHumanoidBone(target);
+    const auto j = skeleton.Find(joint);
+    if (parsed && *parsed == bone && j) return *j;
+  }
+  return -1;
+}
+
+// The chains start from the upper legs and the hands: named ones, or those a user override
+// names (so that overriding a hand the names miss maps its whole arm).
+AutoResult MapAutomatically(const RigStructure& rig, const std::map<std::string, std::string>& overrides) {
   AutoResult out;
   RigMapping& m = out.mapping;
   m.family = rig_names::DetectFamily(rig.skeleton());
-  const int leg_l = rig.BestByName(NameKind::kUpperLeg, Side::kLeft);
-  const int leg_r = rig.BestByName(NameKind::kUpperLeg, Side::kRight);
+  const auto anchor = [&](B bone, NameKind kind, Side side) {
+    const int given = OverriddenJoint(rig.skeleton(), overrides, bone);
+    return given >= 0 ? given : rig.BestByName(kind, side);
+  };
+  const int leg_l = anchor(B::kLeftUpperLeg, NameKind::kUpperLeg, Side::kLeft);
+  const int leg_r = anchor(B::kRightUpperLeg, NameKind::kUpperLeg, Side::kRight);
   if (leg_l >= 0) MapLeg(rig, leg_l, true, m);
   if (leg_r >= 0) MapLeg(rig, leg_r, false, m);
-  const int hand_l = rig.BestByName(NameKind::kHand, Side::kLeft);
-  const int hand_r = rig.BestByName(NameKind::kHand, Side::kRight);
+  const int hand_l = anchor(B::kLeftHand, NameKind::kHand, Side::kLeft);
+  const int hand_r = anchor(B::kRightHand, NameKind::kHand, Side::kRight);
   const int top_l = hand_l >= 0 ? MapArm(rig, hand_l, true, m) : -1;
   const int top_r = hand_r >= 0 ? MapArm(rig, hand_r, false, m) : -1;
 
@@ -336,7 +352,7 @@ int RigMapping::BoneOfJoint(int joint) const {
 Result<RigMapping> MapHumanoid(const Skeleton& skeleton, const std::vector<Eigen::Vector3d>& pose_world_positions,
                                const RigMapOptions& options) {
   const RigStructure rig(skeleton);
-  AutoResult automatic = MapAutomatically(rig);
+  AutoResult automatic = MapAutomatically(rig, options.overrides);
   RigMapping& m = automatic.mapping;
   CheckSides(rig, pose_world_positions, m);
   NoteNameStructureDisagreements(rig, m);

@@ -7,6 +7,7 @@
 #include "processing/core/rotation.h"
 #include "processing/motion/resample.h"
 #include "processing/retargeting/retarget_scene.h"
+#include "processing/motion/key_fidelity.h"
 #include "processing/sketch_fill/sketch_keys.h"
 #include "processing/synthesis/fill.h"
 
@@ -53,9 +54,10 @@ std::map<std::string, std::string> CanonicalOverrides(const std::map<std::string
   std::map<std::string, std::string> out;
   for (const auto& [joint, target] : map) {
     std::string bone = target;
+    // A database joint stands for its canonical bone, or for none (joint_Root): unmapped.
     if (!target.empty() && !ParseHumanoidBone(target))
-      if (const std::optional<int> d = database.Find(target); d && db_mapping.BoneOfJoint(*d) >= 0)
-        bone = HumanoidBoneName(BoneAt(db_mapping.BoneOfJoint(*d)));
+      if (const std::optional<int> d = database.Find(target))
+        bone = db_mapping.BoneOfJoint(*d) >= 0 ? HumanoidBoneName(BoneAt(db_mapping.BoneOfJoint(*d))) : "";
     out[joint] = bone;
   }
   return out;
@@ -115,8 +117,8 @@ MotionClip SampleOutput(const MotionClip& filled, const MotionClip& sketch, cons
     const MotionClip& from = carried[j] ? filled : sketch;
     out.translation_animated[j] = sketch.translation_animated[j] || filled.translation_animated[j];
     for (int f = 0; f < out.num_frames; ++f) {
-      out.rotation(f, j) = RotationAt(from, j, times[f]);
-      out.translation(f, j) = TranslationAt(from, j, times[f]);
+      out.rotation(f, j) = SampleRotationAt(from, j, times[f]);
+      out.translation(f, j) = SampleTranslationAt(from, j, times[f]);
     }
   }
   return out;
@@ -213,15 +215,17 @@ int CountKeys(const MotionClip& clip) {
 
 }  // namespace
 
-std::vector<KeyCheck> CheckKeys(const Skeleton& skeleton, const MotionClip& written, const MotionClip& sketch) {
+std::vector<KeyCheck> CheckKeys(const Skeleton& written_skeleton, const MotionClip& written,
+                                const Skeleton& sketch_skeleton, const MotionClip& sketch) {
   std::vector<KeyCheck> checks;
-  for (int j = 0; j < skeleton.num_joints(); ++j) {
+  for (int j = 0; j < sketch_skeleton.num_joints(); ++j) {
     const RotationKeys keys = RotationKeysOf(sketch, j);
-    if (keys.times_s.empty() || j >= written.num_joints) continue;
-    // A file read back keeps its samples exactly in its keys; evaluate those, as a player would.
-    const RotationKeys samples = RotationKeysOf(written, j);
+    const std::optional<int> w = written_skeleton.Find(sketch_skeleton.name(j));
+    if (keys.times_s.empty() || !w) continue;
+    const RotationKeys samples = RotationKeysOf(written, *w);
+    if (samples.times_s.empty()) continue;
     KeyCheck check;
-    check.joint = skeleton.name(j);
+    check.joint = sketch_skeleton.name(j);
     check.keys = static_cast<int>(keys.times_s.size());
     for (size_t k = 0; k < keys.times_s.size(); ++k) {
       const double e = GeodesicAngle(keys.values[k], KeyedRotationAt(samples, keys.times_s[k])) * kDegPerRad;
@@ -279,7 +283,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   out.KeyAllFrames();
   const double retarget_out_s = Seconds(stage);
 
-  result.key_checks = CheckKeys(sketch.skeleton, out, clip);
+  result.key_checks = CheckKeys(sketch.skeleton, out, sketch.skeleton, clip);
   for (const KeyCheck& k : result.key_checks) {
     result.key_error_max_deg = std::max(result.key_error_max_deg, k.max_deg);
     result.key_error_mean_deg += k.mean_deg * k.keys;
@@ -290,7 +294,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   const TranslationKeys root_keys = TranslationKeysOf(clip, hips);
   for (size_t k = 0; k < root_keys.times_s.size(); ++k)
     result.translation_key_error_max_m = std::max(
-        result.translation_key_error_max_m, (TranslationAt(out, hips, root_keys.times_s[k]) - root_keys.values[k]).norm());
+        result.translation_key_error_max_m, (SampleTranslationAt(out, hips, root_keys.times_s[k]) - root_keys.values[k]).norm());
   result.max_frame_jump_deg = MaxFrameJumpDeg(out);
   WorldPose pose;
   for (const PositionTarget& target : targets) {
@@ -309,6 +313,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   result.report.key_error_max_deg = result.key_error_max_deg;
   result.scene = sketch;
   result.scene.clips = {std::move(out)};
+  result.keyed_sketch = std::move(clip);
   return result;
 }
 

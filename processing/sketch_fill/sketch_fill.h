@@ -50,6 +50,7 @@ struct KeyCheck {
 
 struct SketchFillResult {
   Scene scene;                  // the sketch's scene with the filled clip
+  MotionClip keyed_sketch;      // the sketch's clip as filled: keys after keep/synthesize
   FillReport report;            // of the fill on the database rig (its key errors replaced below)
   RigSummary rig;
   double output_rate_hz = 0.0;
@@ -75,8 +76,11 @@ struct SketchFillResult {
 Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& db, const SketchFillOptions& options,
                                     const PcaModel* model = nullptr);
 
-// Rotation key errors of `written` (a clip on the sketch's skeleton, e.g. read back from the
-// file the fill wrote) against the sketch's keys at their exact times.
-std::vector<KeyCheck> CheckKeys(const Skeleton& skeleton, const MotionClip& written, const MotionClip& sketch);
+// Rotation key errors of `written` (e.g. read back from the file the fill wrote; joints
+// matched by name) against the sketch's keys at their exact times. The written clip is
+// evaluated through its own exact samples where it has them (a file read back keeps them),
+// as a player would interpolate the file.
+std::vector<KeyCheck> CheckKeys(const Skeleton& written_skeleton, const MotionClip& written,
+                                const Skeleton& sketch_skeleton, const MotionClip& sketch);
 
 }  // namespace mocapfill

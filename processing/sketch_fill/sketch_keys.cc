@@ -168,22 +168,6 @@ std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& 
   return kept;
 }
 
-Quaterniond RotationAt(const MotionClip& clip, int joint, double time_s) {
-  int i = 0;
-  double u = 0.0;
-  Locate(clip, time_s, i, u);
-  if (clip.num_frames == 1) return clip.rotation(0, joint);
-  return clip.rotation(i, joint).slerp(u, clip.rotation(i + 1, joint)).normalized();
-}
-
-Vector3d TranslationAt(const MotionClip& clip, int joint, double time_s) {
-  int i = 0;
-  double u = 0.0;
-  Locate(clip, time_s, i, u);
-  if (clip.num_frames == 1) return clip.translation(0, joint);
-  return (1.0 - u) * clip.translation(i, joint) + u * clip.translation(i + 1, joint);
-}
-
 void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {
   for (int j = 0; j < sketch.num_joints; ++j) {
     const RotationKeys keys = RotationKeysOf(sketch, j);

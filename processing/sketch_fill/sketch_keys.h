@@ -42,11 +42,6 @@ TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint);
 // time that is not on that grid (then `uniform` is false).
 std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& uniform);
 
-// The clip as glTF LINEAR interpolation reads it at `time_s` (slerp and lerp between the
-// frames around it, by their times; the ends hold).
-Eigen::Quaterniond RotationAt(const MotionClip& clip, int joint, double time_s);
-Eigen::Vector3d TranslationAt(const MotionClip& clip, int joint, double time_s);
-
 // Moves every keyed joint of `out` (same skeleton as `sketch`, frame times containing every
 // key time) onto its keys with a displacement map: the offset at each key, interpolated
 // between keys (held before the first and after the last), so that the output passes

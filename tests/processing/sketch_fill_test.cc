@@ -16,6 +16,7 @@
 #include "processing/sketch_fill/sketch_fill.h"
 #include "processing/evaluation/sketch_maker.h"
 #include "processing/retargeting/retarget_scene.h"
+#include "processing/motion/key_fidelity.h"
 #include "processing/sketch_fill/sketch_keys.h"
 #include "tests/support/bone_directions.h"
 #include "tests/support/sparse_sketch.h"
@@ -57,7 +58,7 @@ double KeyErrorDeg(const Scene& out, const MotionClip& source, const Skeleton& s
   for (const std::string& name : joints) {
     const int o = *out.skeleton.Find(name), s = *source_skeleton.Find(name);
     for (double t : times)
-      worst = std::max(worst, GeodesicAngle(RotationAt(out.clips[0], o, t), RotationAt(source, s, t)) * kDegPerRad);
+      worst = std::max(worst, GeodesicAngle(SampleRotationAt(out.clips[0], o, t), SampleRotationAt(source, s, t)) * kDegPerRad);
   }
   return worst;
 }
@@ -93,8 +94,8 @@ TEST_P(SketchRates, KeysExactAtTheirTimesAndOutputAtTheSketchRate) {
   // Every 8 frames at 24 fps, every 7 at 60 fps (every 8 would lie on the 30 Hz grid too,
   // and the lowest rate that holds every key time is the one detected).
   std::vector<double> times = fps > 0 ? testing::EveryStep(clip.duration_s(), (fps == 24 ? 8.0 : 7.0) / fps)
-                                      : std::vector<double>{0.0, 0.31, 0.57, 0.93, 1.41, 1.62, 2.05, 2.5, 2.77,
-                                                            3.3,  3.71, 4.18, 4.6,  5.05, 5.52, 6.1,  6.66, 7.2};
+                                      : std::vector<double>{0.0, 0.313, 0.571, 0.937, 1.411, 1.623, 2.051, 2.507, 2.771,
+                                                            3.303, 3.713, 4.181, 4.603, 5.053, 5.521, 6.103, 6.661, 7.201};
   const std::string path = testing::ScratchDir(std::string("sketch_rate_") + std::to_string(int(fps))) + "/sketch.gltf";
   ASSERT_TRUE(testing::WriteSparseSketch(source->skeleton, clip, kBandaiLegs, times, path));
   Result<SketchFillResult> r = FillFile(path);

@@ -6,8 +6,6 @@ mocapfill_set_warnings(mocapfill_test_bone_directions)
 mocapfill_add_test(retarget_transfer_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/retarget_transfer_test.cc
   LIBS mocapfill_retargeting mocapfill_formats mocapfill_test_bone_directions)
-add_executable(dbg_retarget ${CMAKE_CURRENT_LIST_DIR}/dbg_main.cc)
-target_link_libraries(dbg_retarget mocapfill_sketch_fill mocapfill_evaluation mocapfill_retargeting mocapfill_formats mocapfill_test_bone_directions)
 
 mocapfill_add_test(sketch_fill_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc

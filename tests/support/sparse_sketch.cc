@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "processing/motion/key_fidelity.h"
 #include "processing/sketch_fill/sketch_keys.h"
 #include "tests/formats/gltf_test_support.h"
 
@@ -20,9 +21,9 @@ bool WriteSparseSketch(const Skeleton& skeleton, const MotionClip& clip, const s
     if (!j) return false;
     std::vector<float> rotations, translations;
     for (double t : key_times_s) {
-      const Eigen::Quaterniond q = RotationAt(clip, *j, t);
+      const Eigen::Quaterniond q = SampleRotationAt(clip, *j, t);
       rotations.insert(rotations.end(), {float(q.x()), float(q.y()), float(q.z()), float(q.w())});
-      const Eigen::Vector3d p = TranslationAt(clip, *j, t);
+      const Eigen::Vector3d p = SampleTranslationAt(clip, *j, t);
       translations.insert(translations.end(), {float(p.x()), float(p.y()), float(p.z())});
     }
     gltf.AddChannel("sketch", *j, "rotation", times, rotations);
