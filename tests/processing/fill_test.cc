@@ -13,6 +13,7 @@
 #include "processing/synthesis/hierarchy.h"
 #include "processing/synthesis/sketch_signals.h"
 #include "processing/synthesis/skeleton_map.h"
+#include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
@@ -23,24 +24,7 @@ namespace fs = std::filesystem;
 constexpr double kExactDeg = 1e-6;       // keys copied: only rounding
 constexpr double kKeyToleranceDeg = 0.5;  // issue #4 key fidelity after texturing
 
-const MotionDatabase& DefaultDb() {
-  static const MotionDatabase db = [] {
-    MotionDatabaseBuilder builder;
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(testing::FixturePath("default_db")))
-      if (e.path().extension() == ".bvh") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
-    for (const std::string& f : files) {
-      Result<Scene> scene = ImportFile(f);
-      EXPECT_TRUE(scene.ok()) << scene.status().message();
-      EXPECT_TRUE(builder.Add(scene->skeleton, scene->clips[0], {{"file", f}}).ok());
-    }
-    Result<MotionDatabase> built = builder.Build();
-    EXPECT_TRUE(built.ok()) << built.status().message();
-    return std::move(*built);
-  }();
-  return db;
-}
+using testing::DefaultDb;
 
 // The shipped glTF sketch in database joint order.
 MotionClip Sketch() {

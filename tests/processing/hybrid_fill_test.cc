@@ -17,6 +17,7 @@
 #include "processing/synthesis/fill.h"
 #include "processing/synthesis/hybrid_fill.h"
 #include "processing/synthesis/skeleton_map.h"
+#include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
@@ -28,24 +29,7 @@ constexpr double kExactDeg = 1e-6;          // full-pose keys: rounding only
 constexpr double kSubspaceKeyMeanDeg = 0.5;  // algorithms.md 9.5 target for the subspace variant
 constexpr double kPositionKeyCm = 1.0;      // issue 5: keyed feet within 1 cm
 
-const MotionDatabase& DefaultDb() {
-  static const MotionDatabase db = [] {
-    MotionDatabaseBuilder builder;
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(testing::FixturePath("default_db")))
-      if (e.path().extension() == ".bvh") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
-    for (const std::string& f : files) {
-      Result<Scene> scene = ImportFile(f);
-      EXPECT_TRUE(scene.ok()) << scene.status().message();
-      EXPECT_TRUE(builder.Add(scene->skeleton, scene->clips[0], {{"file", f}}).ok());
-    }
-    Result<MotionDatabase> built = builder.Build();
-    EXPECT_TRUE(built.ok()) << built.status().message();
-    return std::move(*built);
-  }();
-  return db;
-}
+using testing::DefaultDb;
 
 // The shipped glTF sketch (hips and legs keyed every 8 frames) in database joint order.
 MotionClip Sketch() {

@@ -20,6 +20,7 @@
 #include "processing/sketch_fill/sketch_keys.h"
 #include "tests/support/bone_directions.h"
 #include "tests/support/sparse_sketch.h"
+#include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
@@ -29,24 +30,7 @@ namespace fs = std::filesystem;
 
 constexpr double kKeyToleranceDeg = 0.01;  // issue #14: keys below 0.01 degrees at their times
 
-const MotionDatabase& DefaultDb() {
-  static const MotionDatabase db = [] {
-    MotionDatabaseBuilder builder;
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(testing::FixturePath("default_db")))
-      if (e.path().extension() == ".bvh") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
-    for (const std::string& f : files) {
-      Result<Scene> scene = ImportFile(f);
-      EXPECT_TRUE(scene.ok()) << scene.status().message();
-      EXPECT_TRUE(builder.Add(scene->skeleton, scene->clips[0], {{"file", f}}).ok());
-    }
-    Result<MotionDatabase> built = builder.Build();
-    EXPECT_TRUE(built.ok()) << built.status().message();
-    return std::move(*built);
-  }();
-  return db;
-}
+using testing::DefaultDb;
 
 const std::vector<std::string> kBandaiLegs = {"Hips",       "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L",
                                               "UpperLeg_R", "LowerLeg_R", "Foot_R",     "Toes_R"};
@@ -226,6 +210,7 @@ TEST(SketchFill, GenoSketchScoresLikeTheBandaiRig) {
     c.filled = FillSketch(sketch, DefaultDb(), {});
     ASSERT_TRUE(c.filled.ok()) << c.filled.status().message();
     EXPECT_LT(c.filled->key_error_max_deg, kKeyToleranceDeg);
+    EXPECT_LT(c.filled->max_frame_jump_deg, 60.0);  // no flips on either rig
     c.error_deg = UpperBodyErrorDeg(*c.scene, c.scene->clips[0], c.filled->scene.clips[0]);
   }
   std::printf("upper-body direction error: Bandai rig %.2f deg, Geno rig %.2f deg\n", cases[0].error_deg,

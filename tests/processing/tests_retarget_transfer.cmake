@@ -9,6 +9,7 @@ mocapfill_add_test(retarget_transfer_tests
 
 mocapfill_add_test(sketch_fill_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/../support/default_db.cc
           ${CMAKE_CURRENT_LIST_DIR}/../support/sparse_sketch.cc
           ${CMAKE_CURRENT_LIST_DIR}/../formats/gltf_test_support.cc
   LIBS mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
