@@ -249,7 +249,13 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
       "  mocapfill fill baked.bvh -o out.glb --keep Hips,UpperLeg_L,LowerLeg_L,Foot_L,UpperLeg_R,LowerLeg_R,Foot_R\n"
       "  mocapfill fill sketch.glb -o out.glb --db ../shared/data/bandai-namco-1/data --method fragment\n"
       "  mocapfill fill sketch.glb -o out.glb --method hybrid --pca walk.pca --report fill.json\n"
-      "  mocapfill fill sketch.glb -o out.glb --method hybrid --pca-fit full-pose --dial 1=+1.5");
+      "  mocapfill fill sketch.glb -o out.glb --method hybrid --pca-fit full-pose --dial 1=+1.5\n"
+      "  mocapfill fill my_rig_sketch.glb -o out.glb --map '{\"Bip01 L Clavicle\": \"leftShoulder\"}' --rate 60\n"
+      "  mocapfill fill ik_sketch.glb -o out.glb --method hybrid --pca-fit full-pose --position-keys LeftFoot,RightFoot\n"
+      "\n"
+      "The sketch may be on any humanoid rig (see `mocapfill rig show`); the output is that rig at the sketch's\n"
+      "own rate, or at --rate HZ, which also sets the grid keyed inputs are read on. Keys are reproduced at their\n"
+      "exact times; the reported key error is measured on the file written.");
   command->callback([args, &action] { action = [args] { return RunFill(*args); }; });
 }
 
