@@ -300,3 +300,51 @@ TEST(SketchFill, PositionKeysHoldTheFeet) {
 
 }  // namespace
 }  // namespace mocapfill
+
+namespace mocapfill {
+namespace {
+
+// The joints of the canonical hips, legs, feet and toes on a rig, by the rig's own names.
+std::vector<std::string> LegJoints(const Scene& scene) {
+  Result<PreparedRig> rig = PrepareRig(scene);
+  EXPECT_TRUE(rig.ok()) << rig.status().message();
+  std::vector<std::string> names;
+  using B = HumanoidBone;
+  for (B b : {B::kHips, B::kLeftUpperLeg, B::kLeftLowerLeg, B::kLeftFoot, B::kLeftToes, B::kRightUpperLeg,
+              B::kRightLowerLeg, B::kRightFoot, B::kRightToes})
+    if (rig.ok() && rig->mapping.has(b)) names.push_back(scene.skeleton.name(rig->mapping.joint(b)));
+  return names;
+}
+
+// Every real rig here, keyed at hips and legs and filled with texturing on: keys exact at
+// their times, and no joint turns by more than 60 degrees between output frames unless the
+// sketch itself does.
+TEST(SketchFill, EveryRigKeepsKeysWithoutFlips) {
+  std::vector<std::string> files = {"bvh/bandai_walk_normal_001_short.bvh", "bvh/cmu_01_01_short.bvh",
+                                    "bvh/boxing_toes_short.bvh", "rigs/mixamo_prefixed.bvh", "rigs/rigify_def.bvh",
+                                    "rigs/smpl_body.bvh"};
+  for (std::string& f : files) f = testing::FixturePath(f);
+  if (!testing::DataDir().empty())
+    for (const char* f : {"assimp/Boxing_Toes.bvh", "geno/Geno_bind.bvh", "geno/Geno_stance.bvh", "cmu/01_03.bvh"})
+      files.push_back(testing::DataPath(f));
+  else
+    std::printf("shared corpus not found (../shared/data): its rigs skipped\n");
+  for (const std::string& file : files) {
+    SCOPED_TRACE(file);
+    Result<Scene> sketch = ImportFile(file);
+    ASSERT_TRUE(sketch.ok()) << sketch.status().message();
+    SketchFillOptions options;
+    options.keep = LegJoints(*sketch);
+    ASSERT_GE(options.keep.size(), 7u);
+    Result<SketchFillResult> r = FillSketch(*sketch, DefaultDb(), options);
+    ASSERT_TRUE(r.ok()) << r.status().message();
+    EXPECT_LT(r->key_error_max_deg, kKeyToleranceDeg);
+    const std::vector<double> sketch_jumps = MaxFrameJumpsDeg(sketch->clips[0]);
+    const std::vector<double> out_jumps = MaxFrameJumpsDeg(r->scene.clips[0]);
+    for (int j = 0; j < sketch->skeleton.num_joints(); ++j)
+      EXPECT_LT(out_jumps[j], std::max(60.0, sketch_jumps[j] + 1.0)) << sketch->skeleton.name(j);
+  }
+}
+
+}  // namespace
+}  // namespace mocapfill
