@@ -70,6 +70,7 @@ Result<std::unique_ptr<Node>> CreateFill(const NodeOptions& o) {
   sketch_options.map = o.StringMap("rename");
   sketch_options.keep = o.StringList("keep");
   sketch_options.synthesize = o.StringList("synthesize");
+  sketch_options.position_keys = o.StringList("position_keys");
   return std::unique_ptr<Node>(new FillNode(std::move(sketch_options)));
 }
 
@@ -100,6 +101,8 @@ NodeTypeSpec FillNodeSpec() {
       NumberOption("rate_hz", 0.0, 0.0, false, 1000.0, "Hz", "output rate (0 = the sketch's own)"),
       ListOption("keep", OptionType::kStringList, "only these joints stay keyed; every other joint is synthesised"),
       ListOption("synthesize", OptionType::kStringList, "joints synthesised even when keyed"),
+      ListOption("position_keys", OptionType::kStringList,
+                 "joints whose translation keys are world-space position targets (hybrid method)"),
   };
   spec.create = CreateFill;
   return spec;
