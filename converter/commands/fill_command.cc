@@ -139,21 +139,7 @@ int Fail(const Status& status, Stage stage) {
 Status MeasureWrittenKeys(const std::string& path, const Scene& sketch, SketchFillResult& result) {
   ASSIGN_OR_RETURN(Scene written, ImportFile(path));
   if (written.clips.empty()) return Internal(path + ": the written file has no animation to check");
-  const MotionClip& sketch_clip = result.keyed_sketch;
-  result.key_checks = CheckKeys(written.skeleton, written.clips.front(), sketch.skeleton, sketch_clip);
-  result.key_error_mean_deg = result.key_error_max_deg = 0.0;
-  int count = 0;
-  for (const KeyCheck& k : result.key_checks) {
-    result.key_error_max_deg = std::max(result.key_error_max_deg, k.max_deg);
-    result.key_error_mean_deg += k.mean_deg * k.keys;
-    count += k.keys;
-    for (JointFillInfo& j : result.joints)
-      if (j.name == k.joint) {
-        j.key_error_mean_deg = k.mean_deg;
-        j.key_error_max_deg = k.max_deg;
-      }
-  }
-  if (count) result.key_error_mean_deg /= count;
+  ApplyKeyChecks(CheckKeys(written.skeleton, written.clips.front(), sketch.skeleton, result.keyed_sketch), result);
   return OkStatus();
 }
 

@@ -126,7 +126,7 @@ MotionClip SampleOutput(const MotionClip& filled, const MotionClip& sketch, cons
 
 std::vector<JointFillInfo> SketchJoints(const Skeleton& s, const RigMapping& sketch_mapping,
                                         const RigMapping& db_mapping, const FillReport& report, const MotionClip& clip,
-                                        const std::vector<std::uint8_t>& carried, const std::vector<KeyCheck>& checks) {
+                                        const std::vector<std::uint8_t>& carried) {
   std::vector<JointFillInfo> joints;
   for (int j = 0; j < s.num_joints(); ++j) {
     JointFillInfo info;
@@ -138,11 +138,6 @@ std::vector<JointFillInfo> SketchJoints(const Skeleton& s, const RigMapping& ske
       info.kind = report.joints[d].kind;
     else
       info.kind = info.keys > 0 ? "keyed" : carried[j] ? "synthesized" : "kept";
-    for (const KeyCheck& k : checks)
-      if (k.joint == info.name) {
-        info.key_error_mean_deg = k.mean_deg;
-        info.key_error_max_deg = k.max_deg;
-      }
     joints.push_back(info);
   }
   return joints;
@@ -163,14 +158,6 @@ struct PositionTarget {
   double time_s = 0.0;
   Vector3d position_m = Vector3d::Zero();  // sketch world
 };
-
-// The output frame whose time is `time_s` (output times hold every key time).
-int FrameAtTime(const MotionClip& clip, double time_s) {
-  int best = 0;
-  for (int f = 1; f < clip.num_frames; ++f)
-    if (std::abs(clip.time_s(f) - time_s) < std::abs(clip.time_s(best) - time_s)) best = f;
-  return best;
-}
 
 // Translation keys of the listed joints become world-space position targets: where the keys
 // put the joint in the sketch, carried to the database's rig like the hips (canonical axes,
@@ -237,6 +224,25 @@ std::vector<KeyCheck> CheckKeys(const Skeleton& written_skeleton, const MotionCl
   return checks;
 }
 
+void ApplyKeyChecks(std::vector<KeyCheck> checks, SketchFillResult& result) {
+  result.key_checks = std::move(checks);
+  result.key_error_mean_deg = result.key_error_max_deg = 0.0;
+  int count = 0;
+  for (const KeyCheck& k : result.key_checks) {
+    result.key_error_max_deg = std::max(result.key_error_max_deg, k.max_deg);
+    result.key_error_mean_deg += k.mean_deg * k.keys;
+    count += k.keys;
+    for (JointFillInfo& j : result.joints)
+      if (j.name == k.joint) {
+        j.key_error_mean_deg = k.mean_deg;
+        j.key_error_max_deg = k.max_deg;
+      }
+  }
+  if (count) result.key_error_mean_deg /= count;
+  result.report.key_error_mean_deg = result.key_error_mean_deg;
+  result.report.key_error_max_deg = result.key_error_max_deg;
+}
+
 Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& db, const SketchFillOptions& options,
                                     const PcaModel* model) {
   const auto start = std::chrono::steady_clock::now();
@@ -283,14 +289,6 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   out.KeyAllFrames();
   const double retarget_out_s = Seconds(stage);
 
-  result.key_checks = CheckKeys(sketch.skeleton, out, sketch.skeleton, clip);
-  for (const KeyCheck& k : result.key_checks) {
-    result.key_error_max_deg = std::max(result.key_error_max_deg, k.max_deg);
-    result.key_error_mean_deg += k.mean_deg * k.keys;
-  }
-  int key_count = 0;
-  for (const KeyCheck& k : result.key_checks) key_count += k.keys;
-  if (key_count) result.key_error_mean_deg /= key_count;
   const TranslationKeys root_keys = TranslationKeysOf(clip, hips);
   for (size_t k = 0; k < root_keys.times_s.size(); ++k)
     result.translation_key_error_max_m = std::max(
@@ -298,19 +296,18 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   result.max_frame_jump_deg = MaxFrameJumpDeg(out);
   WorldPose pose;
   for (const PositionTarget& target : targets) {
-    ComputeWorldPose(sketch.skeleton, out, FrameAtTime(out, target.time_s), pose);
+    ComputeWorldPose(sketch.skeleton, out, NearestFrame(out, target.time_s), pose);
     result.position_key_error_max_m =
         std::max(result.position_key_error_max_m, (pose.positions[target.joint] - target.position_m).norm());
   }
 
   result.joints = SketchJoints(sketch.skeleton, sketch_rig.mapping, db_rig.mapping, filled.report, clip,
-                               CarriedJoints(sketch.skeleton, sketch_rig.mapping), result.key_checks);
+                               CarriedJoints(sketch.skeleton, sketch_rig.mapping));
   result.report = std::move(filled.report);
   result.report.stages.insert(result.report.stages.begin(), {"retarget_prepare", retarget_prepare_s});
   result.report.stages.insert(result.report.stages.begin() + 1, {"retarget_in", retarget_in_s});
   result.report.stages.push_back({"retarget_out", retarget_out_s});
-  result.report.key_error_mean_deg = result.key_error_mean_deg;
-  result.report.key_error_max_deg = result.key_error_max_deg;
+  ApplyKeyChecks(CheckKeys(sketch.skeleton, out, sketch.skeleton, clip), result);
   result.scene = sketch;
   result.scene.clips = {std::move(out)};
   result.keyed_sketch = std::move(clip);

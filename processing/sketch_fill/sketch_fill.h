@@ -83,4 +83,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
 std::vector<KeyCheck> CheckKeys(const Skeleton& written_skeleton, const MotionClip& written,
                                 const Skeleton& sketch_skeleton, const MotionClip& sketch);
 
+// Makes `checks` the result's key errors: the per-joint figures, the totals and the report's.
+void ApplyKeyChecks(std::vector<KeyCheck> checks, SketchFillResult& result);
+
 }  // namespace mocapfill

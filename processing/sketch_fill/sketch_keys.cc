@@ -54,12 +54,6 @@ void Locate(const MotionClip& clip, double time_s, int& i, double& u) {
   u = std::clamp(u, 0.0, 1.0);
 }
 
-int FrameAt(const MotionClip& clip, double time_s) {
-  int i = 0;
-  double u = 0.0;
-  Locate(clip, time_s, i, u);
-  return u > 0.5 ? std::min(i + 1, clip.num_frames - 1) : i;
-}
 
 // Linear interpolation of displacements between keys, held outside them.
 template <typename T>
@@ -168,13 +162,20 @@ std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& 
   return kept;
 }
 
+int NearestFrame(const MotionClip& clip, double time_s) {
+  int i = 0;
+  double u = 0.0;
+  Locate(clip, time_s, i, u);
+  return u > 0.5 ? std::min(i + 1, clip.num_frames - 1) : i;
+}
+
 void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {
   for (int j = 0; j < sketch.num_joints; ++j) {
     const RotationKeys keys = RotationKeysOf(sketch, j);
     if (!keys.times_s.empty()) {
       std::vector<Vector3d> offsets;
       for (size_t k = 0; k < keys.times_s.size(); ++k) {
-        const Quaterniond current = out.rotation(FrameAt(out, keys.times_s[k]), j);
+        const Quaterniond current = out.rotation(NearestFrame(out, keys.times_s[k]), j);
         offsets.push_back(LogMap(keys.values[k] * current.conjugate()));
       }
       for (int f = 0; f < out.num_frames; ++f) {
@@ -183,16 +184,16 @@ void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {
       }
       // The displacement is exact where a key sits on a frame; write the key itself there so
       // rounding of the exponential map leaves nothing behind.
-      for (size_t k = 0; k < keys.times_s.size(); ++k) out.rotation(FrameAt(out, keys.times_s[k]), j) = keys.values[k];
+      for (size_t k = 0; k < keys.times_s.size(); ++k) out.rotation(NearestFrame(out, keys.times_s[k]), j) = keys.values[k];
     }
     const TranslationKeys moves = TranslationKeysOf(sketch, j);
     if (moves.times_s.empty() || j != hips) continue;
     std::vector<Vector3d> offsets;
     for (size_t k = 0; k < moves.times_s.size(); ++k)
-      offsets.push_back(moves.values[k] - out.translation(FrameAt(out, moves.times_s[k]), j));
+      offsets.push_back(moves.values[k] - out.translation(NearestFrame(out, moves.times_s[k]), j));
     for (int f = 0; f < out.num_frames; ++f) out.translation(f, j) += Interpolate(moves.times_s, offsets, out.time_s(f));
     for (size_t k = 0; k < moves.times_s.size(); ++k)
-      out.translation(FrameAt(out, moves.times_s[k]), j) = moves.values[k];
+      out.translation(NearestFrame(out, moves.times_s[k]), j) = moves.values[k];
   }
 }
 
