@@ -22,7 +22,10 @@ TEST(SvgPlot, DrawsPanelsAxesLegendsAndMarkers) {
     panel.title = "panel " + std::to_string(p);
     panel.y_label = "angle (deg)";
     PlotSeries s;
-    s.label = "g" + std::to_string(p);
+    // Appended rather than "g" + to_string: GCC 12 at -O3 flags that operator+ with a false
+    // -Wstringop-overflow (GCC bug 105329).
+    s.label = "g";
+    s.label += std::to_string(p);
     for (int i = 0; i <= 60; ++i) {
       s.x.push_back(i / 30.0);
       s.y.push_back(i == 30 ? NAN : 10.0 * std::sin(i / 5.0));
