@@ -1,5 +1,6 @@
 # `mocapfill pca` verbs (issue #5); edited glTF goes to test-output/pca for the validator.
 mocapfill_add_test(pca_cli_tests
+  CORPUS [=[^PcaCli\.]=]
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/pca_cli_test.cc
     ${CMAKE_CURRENT_LIST_DIR}/../processing/pca_test_data.cc

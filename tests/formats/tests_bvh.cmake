@@ -1,6 +1,7 @@
 # BVH importer and exporter: fixtures under fixtures/bvh and fixtures/bad, corpus tests
 # over ../shared/data (skipped visibly when absent).
 mocapfill_add_test(bvh_tests
+  CORPUS [=[^BvhCorpusFiles\.]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_test_support.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_reader_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_syntax_test.cc
@@ -11,9 +12,11 @@ mocapfill_add_test(bvh_tests
   LIBS mocapfill_bvh)
 # The streaming BVH-to-.glb converter against the clip path, and the direct JSON writer.
 mocapfill_add_test(bvh_glb_tests
+  CORPUS [=[^BvhGlbStream\.EveryCorpusClipGivesTheClipPathsBytes$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_test_support.cc ${CMAKE_CURRENT_LIST_DIR}/bvh_glb_test.cc
   LIBS mocapfill_formats mocapfill_bvh_glb mocapfill_gltf)
 # Whole-file reads, LargeBuffer and SpreadThread.
 mocapfill_add_test(file_io_tests
+  PERF [=[^(LargeBuffer\.(IsMappedForWritingWhenMade|ShortTailStaysInSmallPagesAlreadyFaultedIn|SmallPageTailIsFaultedInUpFront)|ReserveMappedHeap\.SmallAllocationsFindTheirPagesMapped)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc ${CMAKE_CURRENT_LIST_DIR}/spread_thread_test.cc
   LIBS mocapfill_format_common)

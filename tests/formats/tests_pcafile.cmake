@@ -1,5 +1,6 @@
 # The .pca model file (issue #5).
 mocapfill_add_test(pcafile_tests
+  CORPUS [=[^PcaFile\.]=]
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/pca_file_test.cc
     ${CMAKE_CURRENT_LIST_DIR}/../processing/pca_test_data.cc

@@ -1,5 +1,6 @@
 # PCA model, edits, closed-form and Ceres key fits (issue #5), on the shared corpus.
 mocapfill_add_test(pca_tests
+  CORPUS [=[^Pca(Model|Edit|Fit)\.]=]
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/pca_test_data.cc
     ${CMAKE_CURRENT_LIST_DIR}/pca_model_test.cc

@@ -12,5 +12,6 @@ mocapfill_add_test(processing_db_tests
 
 # Real-data tests: shipped fixtures always, the Bandai-Namco corpus when present.
 mocapfill_add_test(database_corpus_tests
+  CORPUS [=[^BandaiNamco\.]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/database_corpus_test.cc
   LIBS mocapfill_mfdb mocapfill_database mocapfill_filtering)

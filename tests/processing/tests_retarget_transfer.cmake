@@ -4,13 +4,15 @@ target_link_libraries(mocapfill_test_bone_directions PUBLIC mocapfill_retargetin
 mocapfill_set_warnings(mocapfill_test_bone_directions)
 
 mocapfill_add_test(retarget_transfer_tests
+  CORPUS [=[^RetargetTransfer\.GenoBindAndStanceFirstFramesAgree$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/retarget_transfer_test.cc
   LIBS mocapfill_retargeting mocapfill_formats mocapfill_test_bone_directions)
 
 mocapfill_add_test(sketch_fill_tests
+  SLOW [=[^SketchFill\.(PositionKeysHoldTheFeet|GenoSketchScoresLikeTheBandaiRig)$]=]
+  CORPUS [=[^SketchFill\.(CmuCorpusSketchHasNoFlips|GenoSketchScoresLikeTheBandaiRig)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/../support/default_db.cc
           ${CMAKE_CURRENT_LIST_DIR}/../support/sparse_sketch.cc
-          ${CMAKE_CURRENT_LIST_DIR}/../formats/gltf_test_support.cc
-  LIBS mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
+  LIBS mocapfill_test_gltf mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
        mocapfill_test_bone_directions)
