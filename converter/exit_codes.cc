@@ -1,5 +1,7 @@
 #include "converter/exit_codes.h"
 
+#include "converter/console.h"
+
 namespace mocapfill::cli {
 
 ExitCode ExitCodeFor(const Status& status, Stage stage) {
@@ -13,6 +15,11 @@ ExitCode ExitCodeFor(const Status& status, Stage stage) {
     case ErrorCode::kInternal: return kExitProcessing;
   }
   return kExitProcessing;
+}
+
+int Fail(const Status& status, Stage stage) {
+  PrintError(status.message());
+  return ExitCodeFor(status, stage);
 }
 
 }  // namespace mocapfill::cli

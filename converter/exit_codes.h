@@ -18,4 +18,7 @@ enum class Stage { kInput, kProcessing, kOutput };
 
 ExitCode ExitCodeFor(const Status& status, Stage stage);
 
+// Prints the status as an error on stderr and returns its exit code.
+int Fail(const Status& status, Stage stage);
+
 }  // namespace mocapfill::cli

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "converter/option_values.h"
+
 namespace mocapfill::cli {
 
 void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
@@ -92,31 +94,6 @@ void AddPcaMethodFlags(CLI::App& command, FillOptions& options, FillFlagText& te
       ->delimiter(',');
 }
 
-namespace {
-
-// "3=-1.5": 1-based component, change in standard deviations.
-Result<std::vector<ComponentDial>> ParseDials(const std::vector<std::string>& texts) {
-  std::vector<ComponentDial> dials;
-  for (const std::string& text : texts) {
-    const size_t eq = text.find('=');
-    ComponentDial dial;
-    size_t used_index = 0, used_value = 0;
-    const Status bad = InvalidArgument("--dial '" + text + "': expected <component>=<sigmas>, e.g. 1=+2.0");
-    try {
-      if (eq == std::string::npos) return bad;
-      dial.component = std::stoi(text.substr(0, eq), &used_index) - 1;
-      dial.sigmas = std::stod(text.substr(eq + 1), &used_value);
-    } catch (const std::exception&) {
-      return bad;
-    }
-    if (used_index != eq || used_value != text.size() - eq - 1 || dial.component < 0) return bad;
-    dials.push_back(dial);
-  }
-  return dials;
-}
-
-}  // namespace
-
 Status ApplyFillFlagText(const FillFlagText& text, FillOptions& options) {
   ASSIGN_OR_RETURN(options.join, ParseJoinCriterion(text.join));
   options.texture = text.texture == "on";
@@ -125,7 +102,7 @@ Status ApplyFillFlagText(const FillFlagText& text, FillOptions& options) {
   options.pca.fit.full_pose = text.pca_fit == "full-pose";
   options.pca.keyed_base = text.keyed_base == "sketch" ? KeyedBase::kSketch : KeyedBase::kFit;
   options.pca.texture_synthesized = text.texture_synthesized == "on";
-  ASSIGN_OR_RETURN(options.pca.dials, ParseDials(text.dials));
+  ASSIGN_OR_RETURN(options.pca.dials, ParseComponentDials(text.dials, "--dial"));
   return OkStatus();
 }
 

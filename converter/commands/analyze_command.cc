@@ -39,11 +39,6 @@ struct AnalyzeArgs {
   ImportOptions import;
 };
 
-int Fail(const Status& status, Stage stage) {
-  PrintError(status.message());
-  return ExitCodeFor(status, stage);
-}
-
 // The correlation table used for the report, with the channel names of its columns.
 struct CorrelationSource {
   std::string source;  // "database <path>" or "clip"

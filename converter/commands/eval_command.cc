@@ -10,6 +10,7 @@
 #include "converter/console.h"
 #include "converter/exit_codes.h"
 #include "converter/fill_flags.h"
+#include "converter/option_values.h"
 #include "formats/mfdb/motion_folder.h"
 #include "formats/motion_io.h"
 #include "processing/motion/resample.h"
@@ -30,14 +31,6 @@ struct EvalArgs {
   FillOptions fill;
   FillFlagText text;
 };
-
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
   return {{"mpjpe_unkeyed_cm", m.mpjpe_unkeyed_cm},
@@ -88,11 +81,6 @@ void PrintTable(const EvaluationResult& r, const EvalArgs& args) {
                   m.npss, m.jitter_ratio, m.foot_skate_cm_per_s, 100.0 * m.foot_skate_share, m.key_error_mean_deg,
                   m.key_error_max_deg, 1000.0 * row.fill_seconds);
     }
-}
-
-int Fail(const Status& status, Stage stage) {
-  PrintError(status.message());
-  return ExitCodeFor(status, stage);
 }
 
 Result<std::vector<LabeledClip>> LoadClips(const EvalArgs& args) {

@@ -12,6 +12,7 @@
 #include "converter/exit_codes.h"
 #include "converter/fill_flags.h"
 #include "converter/import_flags.h"
+#include "converter/option_values.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
@@ -30,14 +31,6 @@ struct FillArgs {
   FillOptions fill;
   FillFlagText text;
 };
-
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 // --map: inline JSON (starting with '{') or a JSON file.
 Result<std::map<std::string, std::string>> ReadMapArg(const std::string& arg) {
@@ -127,11 +120,6 @@ void PrintSummary(const SketchFillResult& result) {
   if (r.has_solver)
     std::fprintf(stderr, "  pca fit: %s after %d iterations, cost %.4g -> %.4g\n", r.solver.termination_type.c_str(),
                  r.solver.iterations, r.solver.initial_cost, r.solver.final_cost);
-}
-
-int Fail(const Status& status, Stage stage) {
-  PrintError(status.message());
-  return ExitCodeFor(status, stage);
 }
 
 // The key errors as the written file holds them: the output read back and evaluated at the

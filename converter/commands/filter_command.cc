@@ -54,11 +54,6 @@ Result<std::vector<int>> JointIndices(const Skeleton& skeleton, const std::vecto
   return indices;
 }
 
-int Fail(const Status& status, Stage stage) {
-  PrintError(status.message());
-  return ExitCodeFor(status, stage);
-}
-
 int RunFilter(const FilterArgs& args) {
   if (!IsExportExtension(args.output)) return Fail(InvalidArgument(args.output + ": output must end in .gltf, .glb or .bvh"), Stage::kOutput);
   if (IsSameFile(args.input, args.output) ||

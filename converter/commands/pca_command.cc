@@ -13,6 +13,7 @@
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
 #include "converter/import_flags.h"
+#include "converter/option_values.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
@@ -41,19 +42,6 @@ struct PcaArgs {
   bool drop_residual = false;
   ImportOptions import;
 };
-
-int Fail(const Status& status, Stage stage) {
-  PrintError(status.message());
-  return ExitCodeFor(status, stage);
-}
-
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 int RunBuild(PcaArgs& args) {
   args.build.labels = SplitList(args.labels);
@@ -123,27 +111,6 @@ int RunInfo(const PcaArgs& args) {
   return kExitOk;
 }
 
-// "--component 3=-1.5": 1-based component, change in standard deviations.
-Result<std::vector<ComponentDial>> ParseDials(const std::vector<std::string>& texts) {
-  std::vector<ComponentDial> dials;
-  for (const std::string& text : texts) {
-    const size_t eq = text.find('=');
-    ComponentDial dial;
-    size_t used_index = 0, used_value = 0;
-    try {
-      if (eq == std::string::npos) throw std::invalid_argument("no '='");
-      dial.component = std::stoi(text.substr(0, eq), &used_index) - 1;
-      dial.sigmas = std::stod(text.substr(eq + 1), &used_value);
-    } catch (const std::exception&) {
-      return InvalidArgument("--component '" + text + "': expected <component>=<sigmas>, e.g. 1=+2.0");
-    }
-    if (used_index != eq || used_value != text.size() - eq - 1)
-      return InvalidArgument("--component '" + text + "': expected <component>=<sigmas>, e.g. 1=+2.0");
-    dials.push_back(dial);
-  }
-  return dials;
-}
-
 Result<MotionClip> EditClip(const PcaModel& model, const Skeleton& skeleton, const MotionClip& input,
                             const PcaEditOptions& options) {
   MotionClip clip = input;
@@ -162,7 +129,7 @@ Result<MotionClip> EditClip(const PcaModel& model, const Skeleton& skeleton, con
 int RunEdit(const PcaArgs& args) {
   PcaEditOptions options;
   options.keep_residual = !args.drop_residual;
-  Result<std::vector<ComponentDial>> dials = ParseDials(args.components);
+  Result<std::vector<ComponentDial>> dials = ParseComponentDials(args.components, "--component");
   if (!dials.ok()) return Fail(dials.status(), Stage::kProcessing);
   options.dials = *dials;
   if (!IsExportExtension(args.output))

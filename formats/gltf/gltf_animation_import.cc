@@ -26,7 +26,6 @@ struct JointTrack {
   KeyTrack track;
 };
 
-std::string Str(int64_t v) { return std::to_string(v); }
 
 Result<Interpolation> ParseInterpolation(const std::string& text, const std::string& field) {
   if (text == "LINEAR" || text.empty()) return Interpolation::kLinear;

@@ -8,8 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "processing/core/scene.h"
+#include "formats/gltf/gltf_str.h"
 #include "formats/gltf/tinygltf_name.h"
+#include "processing/core/scene.h"
 #include "processing/core/status.h"
 
 namespace tinygltf {

@@ -11,8 +11,6 @@ namespace mocapfill::gltf_internal {
 
 namespace {
 
-std::string Str(int64_t v) { return std::to_string(v); }
-
 template <typename T>
 int AddAttribute(BufferWriter& buffer, const std::vector<T>& data, int component_type, int type, size_t count,
                  int target, const std::vector<double>& min = {}, const std::vector<double>& max = {}) {

@@ -13,8 +13,6 @@ namespace mocapfill::gltf_internal {
 
 namespace {
 
-std::string Str(int64_t v) { return std::to_string(v); }
-
 bool IsIntegerType(int component_type) {
   return component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
          component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||

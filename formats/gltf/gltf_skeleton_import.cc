@@ -11,7 +11,6 @@ namespace mocapfill::gltf_internal {
 
 namespace {
 
-std::string Str(int64_t v) { return std::to_string(v); }
 std::string NodeField(int i) { return "nodes[" + Str(i) + "]"; }
 
 bool AllFinite(const std::vector<double>& v) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "processing/core/stopwatch.h"
 #include "processing/pca/closed_form_fit.h"
 #include "processing/pca/internal/fit_common.h"
 #include "processing/pca/internal/linear_cost.h"
@@ -19,8 +20,6 @@ namespace {
 using pca_internal::LinearCost;
 using pca_internal::RowMajorMatrix;
 using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
 
 // Channel groups that form one parameter block each: three per joint, then the root features.
 struct Group {
@@ -154,7 +153,7 @@ Result<PcaFitResult> FitFullPoseToKeys(const PcaModel& model, const PcaKeyProble
   Clock::time_point start = Clock::now();
   ASSIGN_OR_RETURN(Eigen::MatrixXd initial, InitialPoses(model, problem, options));
   if (problem.key_mask.size() != 0) initial = problem.key_mask.select(problem.key_values.array(), initial.array()).matrix();
-  result.initial_guess_s = Seconds(start);
+  result.initial_guess_s = SecondsSince(start);
 
   start = Clock::now();
   FullPoseState s;
@@ -174,12 +173,12 @@ Result<PcaFitResult> FitFullPoseToKeys(const PcaModel& model, const PcaKeyProble
       ASSIGN_OR_RETURN(const bool keyed, GroupKeyed(model, problem, g, t));
       if (keyed) ceres_problem.SetParameterBlockConstant(s.Block(t, g));
     }
-  result.build_s = Seconds(start);
+  result.build_s = SecondsSince(start);
 
   start = Clock::now();
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &ceres_problem, &summary);
-  result.solve_s = Seconds(start);
+  result.solve_s = SecondsSince(start);
   result.report = pca_internal::MakeReport(summary, solver_options);
   if (summary.termination_type == ceres::FAILURE || summary.termination_type == ceres::USER_FAILURE)
     return NumericalFailure("full-pose PCA fit failed: " + summary.message);

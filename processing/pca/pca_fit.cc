@@ -4,8 +4,9 @@
 #include <memory>
 #include <vector>
 
-#include "processing/pca/closed_form_fit.h"
 #include "processing/core/rotation.h"
+#include "processing/core/stopwatch.h"
+#include "processing/pca/closed_form_fit.h"
 #include "processing/pca/internal/fit_common.h"
 #include "processing/pca/internal/linear_cost.h"
 #include "processing/pca/pca_projection.h"
@@ -17,8 +18,6 @@ namespace {
 using pca_internal::LinearCost;
 using pca_internal::RowMajorMatrix;
 using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
 
 // Residual (y_O(c) - target_O) / sigma_O on the masked channels of frame t, or nullptr.
 LinearCost* MakeChannelCost(const PcaModel& model, const Eigen::MatrixXd& values, const ChannelMask& mask, int t,
@@ -122,18 +121,18 @@ Result<PcaFitResult> FitPcaToKeys(const PcaModel& model, const PcaKeyProblem& pr
   PcaFitResult result;
   Clock::time_point start = Clock::now();
   ASSIGN_OR_RETURN(const Eigen::MatrixXd initial, InitialCoefficients(model, problem, options));
-  result.initial_guess_s = Seconds(start);
+  result.initial_guess_s = SecondsSince(start);
 
   start = Clock::now();
   std::vector<double> c = ToRowMajor(initial);
   ceres::Problem ceres_problem;
   AddSubspaceResiduals(model, problem, options, c, ceres_problem);
-  result.build_s = Seconds(start);
+  result.build_s = SecondsSince(start);
 
   start = Clock::now();
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &ceres_problem, &summary);
-  result.solve_s = Seconds(start);
+  result.solve_s = SecondsSince(start);
   result.report = pca_internal::MakeReport(summary, solver_options);
   if (summary.termination_type == ceres::FAILURE || summary.termination_type == ceres::USER_FAILURE)
     return NumericalFailure("PCA fit failed: " + summary.message);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "processing/core/stopwatch.h"
 #include "processing/motion/tangent_space.h"
 #include "processing/pca/pca_clip.h"
 #include "processing/pca/pca_layout.h"
@@ -13,8 +14,6 @@ namespace mocapfill {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
-
 Status CheckSketch(const PcaModel& model, const Skeleton& skeleton, const MotionClip& sketch) {
   RETURN_IF_ERROR(RequireUniform(sketch, "pca"));
   RETURN_IF_ERROR(ValidatePcaModel(model).WithContext("pca model"));
@@ -172,7 +171,7 @@ Result<PcaSketchFit> FitSketchToKeys(const PcaModel& model, const Skeleton& skel
     for (const PositionKey& key : problem.position_keys)
       for (int m = key.joint; m >= 0; m = binding.model_parents[m]) problem.guide_mask.middleCols<3>(3 * m) = false;
   }
-  out.encode_s = Seconds(start);
+  out.encode_s = SecondsSince(start);
   if (options.full_pose) {
     ASSIGN_OR_RETURN(out.fit, FitFullPoseToKeys(model, problem, options.fit));
   } else {
@@ -180,7 +179,7 @@ Result<PcaSketchFit> FitSketchToKeys(const PcaModel& model, const Skeleton& skel
   }
   start = Clock::now();
   ASSIGN_OR_RETURN(out.clip, DecodeClip(model, binding, skeleton, encoded, out.fit.poses, sketch));
-  out.decode_s = Seconds(start);
+  out.decode_s = SecondsSince(start);
   return out;
 }
 

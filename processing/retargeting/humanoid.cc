@@ -7,6 +7,8 @@ namespace mocapfill {
 
 namespace {
 
+using B = HumanoidBone;
+
 struct BoneInfo {
   const char* name;
   bool required;
@@ -69,7 +71,6 @@ std::optional<HumanoidBone> CanonicalParent(HumanoidBone bone) {
 HumanoidBone MirrorBone(HumanoidBone bone) { return BoneAt(kBones[BoneIndex(bone)].mirror); }
 
 Eigen::Vector3d CanonicalDirection(HumanoidBone bone) {
-  using B = HumanoidBone;
   const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
   const Eigen::Vector3d forward = Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d left = Eigen::Vector3d::UnitX();  // the character's left, facing +Z
@@ -101,7 +102,6 @@ Eigen::Vector3d CanonicalDirection(HumanoidBone bone) {
 }
 
 Eigen::Vector3d CanonicalTwistReference(HumanoidBone bone) {
-  using B = HumanoidBone;
   // Feet and toes point forward, so forward cannot fix their twist: up does.
   if (bone == B::kLeftFoot || bone == B::kLeftToes || bone == B::kRightFoot || bone == B::kRightToes)
     return Eigen::Vector3d::UnitY();

@@ -13,6 +13,8 @@ namespace mocapfill {
 
 namespace {
 
+using B = HumanoidBone;
+
 using Eigen::Matrix3d;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
@@ -68,7 +70,6 @@ std::optional<Vector3d> ChildTarget(const Skeleton& skeleton, int joint, const s
 
 // The mapped bones that follow `bone` in the canonical T-pose direction, nearest first.
 std::vector<HumanoidBone> DirectionBones(HumanoidBone bone) {
-  using B = HumanoidBone;
   switch (bone) {
     case B::kSpine: return {B::kChest, B::kUpperChest, B::kNeck, B::kHead};
     case B::kChest: return {B::kUpperChest, B::kNeck, B::kHead};
@@ -117,7 +118,6 @@ std::optional<Vector3d> RestDirection(const Skeleton& skeleton, const RigMapping
 }
 
 double HipHeight(const RigMapping& mapping, const RestGeometry& rest) {
-  using B = HumanoidBone;
   const double hips_y = rest.positions[mapping.joint(B::kHips)].y();
   double lowest = hips_y;
   for (B b : {B::kLeftFoot, B::kRightFoot, B::kLeftToes, B::kRightToes, B::kLeftLowerLeg, B::kRightLowerLeg})
@@ -221,7 +221,6 @@ Vector3d ChainEnd(const Skeleton& skeleton, const MotionClip& clip, int f, const
 }  // namespace
 
 Result<HumanoidRig> HumanoidRig::Make(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& rest) {
-  using B = HumanoidBone;
   const int n = skeleton.num_joints();
   if (static_cast<int>(rest.local_rotations.size()) != n || static_cast<int>(rest.local_translations.size()) != n)
     return InvalidData("the rest pose does not fit the skeleton (" + std::to_string(rest.local_rotations.size()) +

@@ -5,6 +5,10 @@
 
 namespace mocapfill {
 
+namespace {
+using B = HumanoidBone;
+}  // namespace
+
 using rig_names::NameKind;
 using rig_names::Side;
 
@@ -114,7 +118,6 @@ std::vector<int> RigStructure::NeckChain(int top) const {
 
 std::optional<Eigen::Matrix3d> RigStructure::BodyFrame(const RigMapping& m,
                                                        const std::vector<Eigen::Vector3d>& pose) const {
-  using B = HumanoidBone;
   const int hips = m.joint(B::kHips), head = m.joint(B::kHead);
   if (hips < 0 || head < 0) return std::nullopt;
   const Eigen::Vector3d trunk = pose[head] - pose[hips];

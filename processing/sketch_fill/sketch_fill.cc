@@ -5,9 +5,10 @@
 
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
+#include "processing/core/stopwatch.h"
+#include "processing/motion/key_fidelity.h"
 #include "processing/motion/resample.h"
 #include "processing/retargeting/retarget_scene.h"
-#include "processing/motion/key_fidelity.h"
 #include "processing/sketch_fill/sketch_keys.h"
 #include "processing/synthesis/fill.h"
 
@@ -17,10 +18,6 @@ namespace {
 
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
-
-double Seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
 
 // The database's mean pose as its rest: mean local rotations, the motion root upright at
 // the mean tilt with no heading. Database clips are captures of a standing performer, so this
@@ -261,7 +258,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   ASSIGN_OR_RETURN(const std::vector<SketchPositionKey> position_keys,
                    TakePositionKeys(sketch.skeleton, options.position_keys, sketch_rig, db_rig, db, clip, targets));
   for (const std::string& w : result.rig.warnings) result.warnings.push_back(w);
-  const double retarget_prepare_s = Seconds(start);
+  const double retarget_prepare_s = SecondsSince(start);
 
   // Onto the database's rig at its rate.
   auto stage = std::chrono::steady_clock::now();
@@ -270,7 +267,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   ASSIGN_OR_RETURN(const MotionClip sketch_at_db, ResampleClip(clip, at_db));
   MotionClip on_db = FromCanonical(db_rig.rig, ToCanonical(sketch_rig.rig, sketch_at_db));
   on_db.name = clip.name;
-  const double retarget_in_s = Seconds(stage);
+  const double retarget_in_s = SecondsSince(stage);
 
   FillEngine engine(db);
   if (model) engine.SetPcaModel(model);
@@ -287,7 +284,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   PinKeys(clip, hips, out);
   out.MakeContinuous();
   out.KeyAllFrames();
-  const double retarget_out_s = Seconds(stage);
+  const double retarget_out_s = SecondsSince(stage);
 
   const TranslationKeys root_keys = TranslationKeysOf(clip, hips);
   for (size_t k = 0; k < root_keys.times_s.size(); ++k)

@@ -15,17 +15,13 @@ namespace mocapfill {
 namespace {
 
 using testing::FixturePath;
+using testing::kExactM;
+using testing::ReadFixture;
 using testing::ReadText;
 
-constexpr double kExactM = 1e-12;            // metres: values read straight from the text
 constexpr double kSnappedM = 1e-9;           // metres: constant channels snapped to frame 0
 constexpr double kRotationTolDeg = 1e-9;     // same Euler numbers, two composition codes
 constexpr double kCmuUnitM = 0.056444;
-
-Result<Scene> ReadFixture(const std::string& name, const ImportOptions& options = {}) {
-  const std::string path = FixturePath("bvh/" + name);
-  return ReadBvh(ReadText(path), path, options);
-}
 
 // Every joint at `frame` against the raw row: rotations composed from the listed angles,
 // listed position components scaled to metres.

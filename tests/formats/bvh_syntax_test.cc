@@ -14,11 +14,12 @@
 #include "formats/bvh/bvh_number.h"
 #include "formats/bvh/bvh_reader.h"
 #include "processing/core/rotation.h"
+#include "tests/formats/bvh_test_support.h"
 
 namespace mocapfill {
 namespace {
 
-constexpr double kExactM = 1e-12;
+using testing::kExactM;
 
 // Hips and Ab of Boxing_Toes.bvh with its first frame; `ab_channels` and `ab_values` vary.
 std::string TwoJoints(const std::string& ab_channels, const std::string& ab_values,

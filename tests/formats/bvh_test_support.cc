@@ -7,9 +7,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "formats/bvh/bvh_reader.h"
 #include "processing/core/rotation.h"
+#include "tests/support/test_paths.h"
 
 namespace mocapfill::testing {
+
+Result<Scene> ReadFixture(const std::string& name, const ImportOptions& options) {
+  const std::string path = FixturePath("bvh/" + name);
+  return ReadBvh(ReadText(path), path, options);
+}
 
 std::string ReadText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

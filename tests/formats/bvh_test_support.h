@@ -8,12 +8,18 @@
 #include <string>
 #include <vector>
 
+#include "formats/motion_io.h"
 #include "processing/core/scene.h"
+#include "processing/core/status.h"
 
 namespace mocapfill::testing {
 
 constexpr double kRoundTripRotationToleranceDeg = 1e-6;
 constexpr double kRoundTripTranslationToleranceM = 1e-9;
+constexpr double kExactM = 1e-12;  // metres: values read straight from the text
+
+// Reads fixtures/bvh/<name> with ReadBvh.
+Result<Scene> ReadFixture(const std::string& name, const ImportOptions& options = {});
 
 // Reads a whole file as bytes (test helper: fails the test on error and returns "").
 std::string ReadText(const std::string& path);

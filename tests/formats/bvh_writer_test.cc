@@ -19,12 +19,8 @@ namespace {
 using testing::FixturePath;
 using testing::kRoundTripRotationToleranceDeg;
 using testing::kRoundTripTranslationToleranceM;
+using testing::ReadFixture;
 using testing::ReadText;
-
-Result<Scene> ReadFixture(const std::string& name) {
-  const std::string path = FixturePath("bvh/" + name);
-  return ReadBvh(ReadText(path), path, {});
-}
 
 // Writes `scene` and reads the text back (same unit choice as the source unless given).
 Result<Scene> RoundTrip(const Scene& scene, std::string* text_out = nullptr, ImportOptions read_options = {},

@@ -50,18 +50,18 @@ void ExpectConsistentGlb(const GlbFile& glb) {
   const uint32_t json_length = U32At(file, 12);
   EXPECT_EQ(U32At(file, 16), 0x4E4F534Au);
   EXPECT_EQ(json_length % 4, 0u);
-  const nlohmann::json json = nlohmann::json::parse(file.substr(20, json_length));
+  const nlohmann::json json_chunk = nlohmann::json::parse(file.substr(20, json_length));
   EXPECT_EQ(glb.bin.size() % 4, 0u);
   if (glb.bin.empty()) {
     EXPECT_EQ(glb.head.size(), file.size());
-    EXPECT_FALSE(json.contains("buffers"));
+    EXPECT_FALSE(json_chunk.contains("buffers"));
     return;
   }
   EXPECT_EQ(glb.head.size(), 20u + json_length + 8u);
   EXPECT_EQ(U32At(file, 20 + json_length), glb.bin.size());
   EXPECT_EQ(U32At(file, 24 + json_length), 0x004E4942u);
-  ASSERT_EQ(json["buffers"].size(), 1u);
-  EXPECT_EQ(json["buffers"][0]["byteLength"].get<size_t>(), glb.bin.size());
+  ASSERT_EQ(json_chunk["buffers"].size(), 1u);
+  EXPECT_EQ(json_chunk["buffers"][0]["byteLength"].get<size_t>(), glb.bin.size());
 }
 
 TEST(GlbWriter, PiecesFormTheFileLibtinygltfWrites) {
