@@ -26,7 +26,7 @@ step_done() {
 bash "$root/tools/install_deps.sh"
 step_done "install"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${MOCAPFILL_BUILD_TYPE:-Release}" \
-  -DMOCAPFILL_WERROR=ON "$@" >/dev/null
+  -DMOCAPFILL_WERROR=ON -DMOCAPFILL_UNITY_BUILD=ON "$@" >/dev/null
 cmake --build "$build" -j "$(nproc)"
 step_done "build"
 rm -rf "$build/test-output"
