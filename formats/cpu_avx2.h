@@ -4,7 +4,15 @@
 // of every process (a static test program with the hook against one without, perf stat).
 #pragma once
 
+#if defined(__clang__) && !defined(_Bool)
+// glibc 2.36's header declares its functions with C's _Bool, which g++ accepts in C++ and
+// clang++ does not (the fuzz and sanitizer builds use clang).
+#define _Bool bool
 #include <sys/platform/x86.h>
+#undef _Bool
+#else
+#include <sys/platform/x86.h>
+#endif
 
 namespace mocapfill {
 

@@ -95,7 +95,7 @@ Result<PipelineFile> ParsePipelineJson(const std::string& text) {
   Json json;
   try {
     json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, or out_of_range for a number like 1e999
     return InvalidArgument("invalid JSON: " + ParseErrorText(e.what()));
   }
   if (!json.is_object()) return InvalidArgument("expected a JSON object {\"version\": 1, \"nodes\": [...]}");

@@ -65,6 +65,7 @@ class MemorySource : public Source {
   explicit MemorySource(std::string_view bytes) : bytes_(bytes) {}
   bool Read(void* dst, size_t size) override {
     if (size > bytes_.size() - pos_) return false;
+    if (size == 0) return true;  // dst may be the null data() of an empty buffer
     std::memcpy(dst, bytes_.data() + pos_, size);
     pos_ += size;
     return true;

@@ -77,7 +77,7 @@ class Reader {
     RETURN_IF_ERROR(Pod(field, size));
     RETURN_IF_ERROR(Need(field, std::uint64_t{size} * sizeof(double)));
     v.resize(size);
-    std::memcpy(v.data(), bytes_.data() + pos_, sizeof(double) * size);
+    if (size > 0) std::memcpy(v.data(), bytes_.data() + pos_, sizeof(double) * size);  // data() is null when empty
     pos_ += sizeof(double) * size;
     return OkStatus();
   }
@@ -86,9 +86,10 @@ class Reader {
     RETURN_IF_ERROR(Pod(field, rows));
     RETURN_IF_ERROR(Pod(field, cols));
     const std::uint64_t size = std::uint64_t{rows} * cols;
-    RETURN_IF_ERROR(Need(field, size * sizeof(double)));
+    // Counted in doubles: rows * cols * 8 can pass 2^64 and wrap to a small byte count.
+    if (size > remaining() / sizeof(double)) return InvalidData(std::string("truncated while reading ") + field);
     m.resize(rows, cols);
-    std::memcpy(m.data(), bytes_.data() + pos_, sizeof(double) * size);
+    if (size > 0) std::memcpy(m.data(), bytes_.data() + pos_, sizeof(double) * size);  // data() is null when empty
     pos_ += sizeof(double) * size;
     return OkStatus();
   }

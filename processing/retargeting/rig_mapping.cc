@@ -378,7 +378,7 @@ Result<std::map<std::string, std::string>> ParseRigMapJson(const std::string& js
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for a number like 1e999
     return InvalidData(origin + ": not valid JSON: " + e.what());
   }
   if (!doc.is_object())
