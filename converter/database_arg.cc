@@ -32,17 +32,21 @@ void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags) {
       ->capture_default_str();
 }
 
-Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& path) {
-  ASSIGN_OR_RETURN(const std::string text, ReadFileBytes(path));
+Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& text, const std::string& origin) {
   const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (json.is_discarded() || !json.is_object())
-    return InvalidData(path + ": a joint-name map must be a JSON object {\"source name\": \"database name\"}");
+    return InvalidData(origin + ": a joint-name map must be a JSON object {\"source name\": \"database name\"}");
   std::map<std::string, std::string> map;
   for (const auto& [key, value] : json.items()) {
-    if (!value.is_string()) return InvalidData(path + ": the value of \"" + key + "\" is not a string");
+    if (!value.is_string()) return InvalidData(origin + ": the value of \"" + key + "\" is not a string");
     map[key] = value.get<std::string>();
   }
   return map;
+}
+
+Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& path) {
+  ASSIGN_OR_RETURN(const std::string text, ReadFileBytes(path));
+  return ParseJointNameMap(text, path);
 }
 
 // Same joint names with the same parents, in any order (what the builder accepts as is).

@@ -26,6 +26,10 @@ struct DatabaseBuildFlags {
 // Adds --rate, --map, --threads, --unit and --up bound to `flags`.
 void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags);
 
+// Parses joint-name map JSON; errors start with `origin` (kInvalidData for bad JSON or
+// non-string values).
+Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& text, const std::string& origin);
+
 // Reads a joint-name map file. Errors name the file (kInvalidData for bad JSON or non-string
 // values, kIoError when unreadable).
 Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& path);

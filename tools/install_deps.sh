@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything mocapfill needs to build and test on Debian 12 (run as root).
 # Idempotent: skips apt when every package is already present.
+# Usage: bash tools/install_deps.sh [--fuzz]   (--fuzz adds clang 14 and libFuzzer, for tools/fuzz.sh)
 set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
@@ -8,6 +9,9 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   bc
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

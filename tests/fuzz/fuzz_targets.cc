@@ -1,0 +1,13 @@
+#include "tests/fuzz/fuzz_targets.h"
+
+namespace mocapfill::fuzz {
+
+const std::vector<FuzzTarget>& AllFuzzTargets() {
+  static const std::vector<FuzzTarget> targets = {
+      {"bvh", FuzzBvh}, {"gltf", FuzzGltf}, {"mfdb", FuzzMfdb},
+      {"pca", FuzzPca}, {"pipeline", FuzzPipeline}, {"maps", FuzzMaps},
+  };
+  return targets;
+}
+
+}  // namespace mocapfill::fuzz
