@@ -14,8 +14,9 @@ namespace mocapfill::assimp_detail {
 namespace {
 
 constexpr double kDefaultTicksPerSecond = 25.0;  // Assimp's documented default when a file gives none
-// Upper bound on frames x joints, so a corrupt duration fails cleanly instead of exhausting memory.
-constexpr double kMaxSamples = 3e7;
+// Upper bound on frames x joints (processing/core/motion_clip.h), so a corrupt duration fails
+// cleanly instead of exhausting memory.
+constexpr double kMaxSamples = static_cast<double>(kMaxMotionJointFrames);
 // Relative deviation from the rest scale above which animated scale is reported as dropped.
 constexpr double kScaleDeviation = 1e-4;
 

@@ -2,6 +2,8 @@
 
 #include <unordered_map>
 
+#include "processing/core/skeleton.h"
+
 namespace mocapfill::bvh {
 
 namespace {
@@ -77,6 +79,8 @@ class HierarchyParser {
     }
     if (name.empty())
       return lexer_.ErrorAt(lexer_.Here(), std::string("expected a joint name after ") + keyword);
+    if (result_.joints.size() >= static_cast<size_t>(kMaxSkeletonJoints))
+      return Error("more than " + std::to_string(kMaxSkeletonJoints) + " joints: not a character rig");
     const auto [it, inserted] = name_lines_.emplace(std::string(name), keyword_location.line);
     if (!inserted)
       return lexer_.ErrorAt(keyword_location, "duplicate joint name " + Quoted(name) + " (first defined at line " +

@@ -142,6 +142,14 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   const std::vector<rows::ChannelGroup> groups = rows::MakeChannelGroups(hierarchy);
   const size_t joints = samplers.size();
   clip.num_joints = static_cast<int>(joints);
+  // A motion declared past the limit, in a file large enough to hold it (every value takes at
+  // least two bytes), is refused before any row is read or any memory reserved for it.
+  const int64_t max_rows_in_text = static_cast<int64_t>(lexer.remaining_bytes() / (2 * static_cast<size_t>(channels))) + 1;
+  if (static_cast<size_t>(std::min(header.declared_frames, max_rows_in_text)) * joints > kMaxJointFrames)
+    return lexer.ErrorAt(lexer.Here(), "the motion is too large: Frames declares " +
+                                           std::to_string(header.declared_frames) + " frames of " + std::to_string(joints) +
+                                           " joints, more than the " + std::to_string(kMaxJointFrames) +
+                                           " joint-frames mocapfill reads");
   if (threads != 1 && lexer.remaining_bytes() >= kParallelMotionMinBytes) {
     if (ParseMotionRowsInParallel(lexer.TextFromHere(), samplers, groups, channels, header.declared_frames, clip))
       return OkStatus();

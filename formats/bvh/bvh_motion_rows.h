@@ -14,12 +14,13 @@
 #include "formats/bvh/bvh_euler.h"
 #include "formats/bvh/bvh_hierarchy.h"
 #include "formats/bvh/bvh_number.h"
+#include "processing/core/motion_clip.h"
 
 namespace mocapfill::bvh::rows {
 
-// Upper bound on frames x joints (about 6 GB of transforms): a tiny hierarchy with many
-// joints but few channels could otherwise make a small file expand without limit.
-inline constexpr size_t kMaxJointFrames = size_t{100'000'000};
+// Upper bound on frames x joints (processing/core/motion_clip.h): a tiny hierarchy with many
+// joints but few channels cannot make a small file expand without limit.
+inline constexpr size_t kMaxJointFrames = static_cast<size_t>(kMaxMotionJointFrames);
 
 // Where one joint's values sit in a motion row (absolute indices, -1 when absent).
 struct JointSampler {

@@ -13,8 +13,8 @@ namespace mocapfill::gltf_internal {
 
 namespace {
 
-// Frames x joints above this would need gigabytes; such a file is refused, not swapped to death.
-constexpr int64_t kMaxSamples = 20'000'000;
+// Frames x joints (processing/core/motion_clip.h).
+constexpr int64_t kMaxSamples = kMaxMotionJointFrames;
 // Translations and scales closer than this (m, or scale units) count as equal: float32 data.
 constexpr double kValueTolerance = 1e-6;
 

@@ -254,6 +254,9 @@ Result<SkeletonImport> ImportSkeleton(const tinygltf::Model& model, const NodeGr
   }
   if (joint_nodes.empty())
     return InvalidData("no skeleton: the scene has no skin joints, animated nodes or mesh-less nodes");
+  if (joint_nodes.size() > static_cast<size_t>(kMaxSkeletonJoints))
+    return InvalidData("nodes: " + Str(joint_nodes.size()) + " joints, more than the " + Str(kMaxSkeletonJoints) +
+                       " of a character rig");
 
   const std::vector<std::string> names = UniqueNames(model, joint_nodes, warnings);
   std::vector<Joint> joints(joint_nodes.size());

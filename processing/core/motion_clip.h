@@ -18,6 +18,12 @@
 
 namespace mocapfill {
 
+// The most frames x joints a motion read from a file may have: 20 million joint-frames is
+// about 1.1 GB of transforms (56 bytes each) and over an hour of a 31-joint capture at
+// 120 Hz. Every reader refuses a larger motion, whatever the file declares, rather than
+// swapping to death.
+constexpr int64_t kMaxMotionJointFrames = 20'000'000;
+
 // Frames (indices into the clip) at which the source had a key, per joint and property.
 // Sorted ascending, no duplicates. A joint with neither rotation nor translation keys
 // is "missing": the fill stages synthesise it.

@@ -15,6 +15,11 @@ namespace mocapfill {
 
 constexpr int kNoParent = -1;
 
+// The most joints a skeleton read from a file may have. Character rigs have tens to a few
+// thousand (fingers, face, twist helpers); beyond this a file is refused as not a rig rather
+// than read into gigabytes.
+constexpr int kMaxSkeletonJoints = 100'000;
+
 struct Joint {
   std::string name;                // unique within a skeleton; preserved exactly (spaces, colons)
   int parent = kNoParent;          // index of the parent joint, always < own index

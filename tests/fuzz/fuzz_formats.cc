@@ -28,7 +28,8 @@ const std::string& GltfFolder() {
     fs::create_directories(dir);
     std::string bytes(4096, '\0');
     for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 37) & 0xff);
-    for (const char* name : {"buffer.bin", "a.bin", "animation.bin"}) std::ofstream(dir / name, std::ios::binary) << bytes;
+    for (const char* name : {"buffer.bin", "a.bin", "animation.bin"})
+      std::ofstream(dir / name, std::ios::binary) << bytes;
     return dir.string();
   }();
   return folder;

@@ -4,7 +4,7 @@ namespace mocapfill::fuzz {
 
 const std::vector<FuzzTarget>& AllFuzzTargets() {
   static const std::vector<FuzzTarget> targets = {
-      {"bvh", FuzzBvh}, {"gltf", FuzzGltf}, {"mfdb", FuzzMfdb},
+      {"bvh", FuzzBvh}, {"gltf", FuzzGltf},         {"mfdb", FuzzMfdb},
       {"pca", FuzzPca}, {"pipeline", FuzzPipeline}, {"maps", FuzzMaps},
   };
   return targets;
