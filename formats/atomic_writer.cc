@@ -194,4 +194,24 @@ Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::
   return writer.Write(path, parts);
 }
 
+size_t RemoveStaleTemporaries(const std::string& folder) {
+  size_t removed = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    const size_t mark = name.rfind(".tmp-");
+    if (mark == std::string::npos || mark == 0 || mark + 5 == name.size()) continue;
+    const std::string digits = name.substr(mark + 5);
+    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid <= 0 || pid == ::getpid()) continue;
+    std::error_code type_ec;
+    if (!entry.is_regular_file(type_ec)) continue;
+    // ESRCH: no such process. EPERM means another user's live process: keep its file.
+    if (::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    if (::unlink(entry.path().c_str()) == 0) ++removed;
+  }
+  return removed;
+}
+
 }  // namespace mocapfill

@@ -54,4 +54,9 @@ Status WriteFileAtomic(const std::string& path, const std::string& bytes);
 // (a .glb's binary chunk is most of the file).
 Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts);
 
+// Removes from `folder` the temporary files ("NAME.tmp-PID") that writers of processes no
+// longer running left behind: a run killed with SIGKILL cannot remove its own. Files of
+// running processes are left alone. Returns how many were removed.
+size_t RemoveStaleTemporaries(const std::string& folder);
+
 }  // namespace mocapfill

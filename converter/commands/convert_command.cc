@@ -186,6 +186,9 @@ int RunConvert(const ConvertArgs& args) {
     target = RetargetTarget{std::move(*character), RigOptions{{}, *rest}};
     read_files.push_back(args.retarget);
   }
+  // A batch killed with SIGKILL leaves its temporary files; the next batch into the folder
+  // removes them (a single conversion does not read the folder: start-up is most of its time).
+  if (!args.output_dir.empty()) RemoveStaleTemporaries(args.output_dir);
   Progress progress("converting", jobs.size());
   const InputSet inputs(read_files);
   std::atomic<size_t> next{0};
@@ -212,6 +215,12 @@ int RunConvert(const ConvertArgs& args) {
     }
     work();
   }  // joined
+  // Every input was tried; each failure has been reported with its file. A batch ends with a
+  // count, so a long log still says how much is missing.
+  const size_t failed = static_cast<size_t>(std::count_if(codes.begin(), codes.end(), [](int c) { return c != kExitOk; }));
+  if (failed > 0 && !one_job)
+    PrintError(std::to_string(failed) + " of " + std::to_string(jobs.size()) + " inputs failed; " +
+               std::to_string(jobs.size() - failed) + " converted");
   for (int code : codes)
     if (code != kExitOk) return code;  // the first failure in input order decides
   return kExitOk;

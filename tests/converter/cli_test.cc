@@ -150,6 +150,38 @@ TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
   }
 }
 
+// A batch with bad inputs among good ones (bad ones first, so the work has to go on past
+// them): every good input converted, every bad one named with its reason, nothing written
+// for the bad ones, a count at the end, exit 2.
+TEST(Cli, BatchWithBadInputsConvertsTheGoodOnesAndReportsEveryBadOne) {
+  const std::string dir = testing::ScratchDir("cli_batch_mixed");
+  std::vector<std::string> bad;
+  for (const char* name : {"garbage.bvh", "missing_brace.bvh", "nan_value.bvh", "unknown_channel.bvh",
+                           "wrong_channel_count.bvh"})
+    bad.push_back(testing::FixturePath(std::string("bad/") + name));
+  const std::vector<std::string> good = FixtureBvhFiles();
+  std::string args = "convert";
+  for (const std::string& in : bad) args.append(" ").append(Quote(in));
+  for (const std::string& in : good) args.append(" ").append(Quote(in));
+  RunResult r = RunCli(args + " -o " + Quote(dir) + " -j 2");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  for (const std::string& in : good) {
+    const std::string out = dir + "/" + fs::path(in).stem().string() + ".glb";
+    ASSERT_TRUE(fs::exists(out)) << out;
+    EXPECT_EQ(ReadAll(out).substr(0, 4), "glTF");
+  }
+  for (const std::string& in : bad) {
+    EXPECT_NE(r.output.find("error: " + in), std::string::npos) << in << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir + "/" + fs::path(in).stem().string() + ".glb")) << in;
+  }
+  const std::string summary = "error: " + std::to_string(bad.size()) + " of " + std::to_string(bad.size() + good.size()) +
+                              " inputs failed; " + std::to_string(good.size()) + " converted";
+  EXPECT_NE(r.output.find(summary), std::string::npos) << r.output;
+  size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) files += entry.is_regular_file();
+  EXPECT_EQ(files, good.size()) << "only the good inputs' outputs, no temporary files";
+}
+
 TEST(Cli, ConvertIsDeterministic) {
   const std::string dir = testing::ScratchDir("cli_determinism");
   const std::string in = FixtureBvhFiles().at(0);

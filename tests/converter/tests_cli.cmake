@@ -1,3 +1,8 @@
 # CLI contract tests run the built executable.
-mocapfill_add_test(cli_tests SOURCES ${CMAKE_CURRENT_LIST_DIR}/cli_test.cc LIBS nlohmann_json::nlohmann_json)
+# Hostile sizes (hostile_input_test.cc) are generated at test time; the gigabyte BVH is slow.
+mocapfill_add_test(cli_tests
+  SLOW [=[^HostileInput\.GigabyteOfBvhRowsIsRefusedWithinTheMemoryBound$]=]
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/cli_test.cc ${CMAKE_CURRENT_LIST_DIR}/batch_cli_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/hostile_input_test.cc
+  LIBS nlohmann_json::nlohmann_json)
 add_dependencies(cli_tests mocapfill)

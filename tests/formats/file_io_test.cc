@@ -335,6 +335,34 @@ TEST(AtomicWriter, ReplacedFilesAreReusedForTheNextOutputAndRemovedAtTheEnd) {
   EXPECT_EQ(FolderEntries(dir), names);
 }
 
+// A process that has exited: its pid names no process (until the kernel hands it out again,
+// which takes a full turn of the pid space).
+pid_t ExitedProcessId() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+// What a batch killed with SIGKILL leaves (NAME.tmp-PID of a process gone) is removed; the
+// temporaries of running processes, and files that only look similar, are not.
+TEST(AtomicWriter, StaleTemporariesOfExitedProcessesAreRemoved) {
+  const std::string dir = testing::ScratchDir("atomic_writer_stale");
+  const std::string gone = std::to_string(ExitedProcessId());
+  const std::vector<std::string> kept = {"a.glb", "b.glb.tmp-" + std::to_string(::getpid()),
+                                         "c.glb.tmp-" + std::to_string(::getppid()), "d.glb.tmp-x1", ".tmp-" + gone,
+                                         "e.glb.tmp-"};
+  for (const std::string& name : kept) ASSERT_TRUE(WriteFileAtomic(dir + "/" + name, "x").ok());
+  for (const std::string& name : {"f.glb.tmp-" + gone, "g.bvh.tmp-" + gone})
+    ASSERT_TRUE(WriteFileAtomic(dir + "/" + name, "partial").ok());
+  EXPECT_EQ(RemoveStaleTemporaries(dir), 2u);
+  std::vector<std::string> expected = kept;
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(FolderEntries(dir), expected);
+  EXPECT_EQ(RemoveStaleTemporaries(dir + "/missing"), 0u);
+}
+
 // A replaced file that another name still links to is never written over, and a reused
 // file gets the mode a new file gets rather than the one it had.
 TEST(AtomicWriter, LinkedSparesAreLeftAloneAndReusedOnesTakeANewFilesMode) {
