@@ -3,5 +3,4 @@ mocapfill_add_test(pcafile_tests
   CORPUS [=[^PcaFile\.]=]
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/pca_file_test.cc
-    ${CMAKE_CURRENT_LIST_DIR}/../processing/pca_test_data.cc
-  LIBS mocapfill_pcafile mocapfill_pca mocapfill_mfdb mocapfill_formats)
+  LIBS mocapfill_test_pca_data mocapfill_pcafile mocapfill_pca mocapfill_mfdb mocapfill_formats)

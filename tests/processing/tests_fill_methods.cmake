@@ -1,15 +1,15 @@
 # Fill methods on the embedded default database and the shipped sketch (issue #4).
 mocapfill_add_test(fill_tests
   CORPUS [=[^Fill\.HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle$]=]
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc ${CMAKE_CURRENT_LIST_DIR}/../support/default_db.cc
-  LIBS mocapfill_evaluation mocapfill_synthesis mocapfill_formats)
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc
+  LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_synthesis mocapfill_formats)
 
 # PCA-based fill methods: `pca` (closed form) and `hybrid` (issue #5, part 2).
 mocapfill_add_test(hybrid_fill_tests
   SLOW [=[^HybridFill\.FootPositionKeysHoldWithinACentimetre$]=]
   CORPUS [=[^HybridFill\.CapturedWalkOfAnUnseenStyleBeatsTheMeanPose$]=]
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_fill_test.cc ${CMAKE_CURRENT_LIST_DIR}/../support/default_db.cc
-  LIBS mocapfill_evaluation mocapfill_synthesis mocapfill_pca mocapfill_formats)
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_fill_test.cc
+  LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_synthesis mocapfill_pca mocapfill_formats)
 
 # Leave-one-style-out over the shared corpus's walks: hybrid against hierarchical (skips visibly
 # without ../shared/data).

@@ -2,10 +2,9 @@
 mocapfill_add_test(pca_tests
   CORPUS [=[^Pca(Model|Edit|Fit)\.]=]
   SOURCES
-    ${CMAKE_CURRENT_LIST_DIR}/pca_test_data.cc
     ${CMAKE_CURRENT_LIST_DIR}/pca_model_test.cc
     ${CMAKE_CURRENT_LIST_DIR}/pca_fit_test.cc
-  LIBS mocapfill_pca mocapfill_evaluation mocapfill_mfdb mocapfill_formats)
+  LIBS mocapfill_test_pca_data mocapfill_pca mocapfill_evaluation mocapfill_mfdb mocapfill_formats)
 
 # Speed of the key fit, stage by stage, against a direct sparse solve (bench/pca_bench.sh).
 if(MOCAPFILL_BUILD_BENCHMARKS)

@@ -12,7 +12,6 @@ mocapfill_add_test(sketch_fill_tests
   SLOW [=[^SketchFill\.(PositionKeysHoldTheFeet|GenoSketchScoresLikeTheBandaiRig)$]=]
   CORPUS [=[^SketchFill\.(CmuCorpusSketchHasNoFlips|GenoSketchScoresLikeTheBandaiRig)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc
-          ${CMAKE_CURRENT_LIST_DIR}/../support/default_db.cc
           ${CMAKE_CURRENT_LIST_DIR}/../support/sparse_sketch.cc
-  LIBS mocapfill_test_gltf mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
+  LIBS mocapfill_test_default_db mocapfill_test_gltf mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
        mocapfill_test_bone_directions)
