@@ -14,9 +14,6 @@ namespace mocapfill::assimp_detail {
 namespace {
 
 constexpr double kDefaultTicksPerSecond = 25.0;  // Assimp's documented default when a file gives none
-// Upper bound on frames x joints (processing/core/motion_clip.h), so a corrupt duration fails
-// cleanly instead of exhausting memory.
-constexpr double kMaxSamples = static_cast<double>(kMaxMotionJointFrames);
 // Relative deviation from the rest scale above which animated scale is reported as dropped.
 constexpr double kScaleDeviation = 1e-4;
 
@@ -163,7 +160,8 @@ Result<MotionClip> ConvertAnimation(const aiAnimation& anim, int index, const No
     rate_hz = detected.rate_hz;
   }
   const double frames_d = std::ceil(end_s * rate_hz - 1e-6) + 1.0;
-  if (!(frames_d * std::max(1, skeleton.num_joints()) <= kMaxSamples))
+  // The shared bound on frames x joints: a corrupt duration fails cleanly, not out of memory.
+  if (!(frames_d * std::max(1, skeleton.num_joints()) <= static_cast<double>(kMaxMotionJointFrames)))
     return InvalidData(what + " lasts " + std::to_string(end_s) + " s, too long to sample at " +
                        std::to_string(rate_hz) + " Hz");
   const int frames = std::max(1, static_cast<int>(frames_d));

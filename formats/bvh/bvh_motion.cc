@@ -142,10 +142,11 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   const std::vector<rows::ChannelGroup> groups = rows::MakeChannelGroups(hierarchy);
   const size_t joints = samplers.size();
   clip.num_joints = static_cast<int>(joints);
-  // A motion declared past the limit, in a file large enough to hold it (every value takes at
-  // least two bytes), is refused before any row is read or any memory reserved for it.
-  const int64_t max_rows_in_text = static_cast<int64_t>(lexer.remaining_bytes() / (2 * static_cast<size_t>(channels))) + 1;
-  if (static_cast<size_t>(std::min(header.declared_frames, max_rows_in_text)) * joints > kMaxJointFrames)
+  // Every value takes at least two bytes: the rest of the file holds at most this many rows.
+  const size_t max_rows = lexer.remaining_bytes() / (2 * static_cast<size_t>(channels)) + 1;
+  // A motion declared past the limit, in a file large enough to hold it, is refused before
+  // any row is read or any memory reserved for it.
+  if (std::min(static_cast<size_t>(header.declared_frames), max_rows) * joints > kMaxJointFrames)
     return lexer.ErrorAt(lexer.Here(), "the motion is too large: Frames declares " +
                                            std::to_string(header.declared_frames) + " frames of " + std::to_string(joints) +
                                            " joints, more than the " + std::to_string(kMaxJointFrames) +
@@ -156,9 +157,8 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
     clip.rotations.clear();
     clip.translations.clear();
   }
-  // Reserve for the declared frames, but never more than the rest of the file can hold
-  // (every value takes at least two bytes), so "Frames: 1000000000" cannot exhaust memory.
-  const size_t max_rows = lexer.remaining_bytes() / (2 * static_cast<size_t>(channels)) + 1;
+  // Reserve for the declared frames, but never more than the rest of the file can hold, so
+  // "Frames: 1000000000" cannot exhaust memory.
   const size_t reserve_rows = std::min({static_cast<size_t>(header.declared_frames), max_rows, kMaxJointFrames / joints});
   clip.rotations.reserve(reserve_rows * joints);
   clip.translations.reserve(reserve_rows * joints);

@@ -14,7 +14,6 @@ namespace {
 // Elements of an accessor without a buffer view are zeros we must allocate; cap them.
 constexpr uint64_t kMaxZeroFilledValues = uint64_t{1} << 26;
 
-
 double ReadComponent(const unsigned char* p, int component_type, bool normalized) {
   switch (component_type) {
     case TINYGLTF_COMPONENT_TYPE_BYTE: {

@@ -13,8 +13,6 @@ namespace mocapfill::gltf_internal {
 
 namespace {
 
-// Frames x joints (processing/core/motion_clip.h).
-constexpr int64_t kMaxSamples = kMaxMotionJointFrames;
 // Translations and scales closer than this (m, or scale units) count as equal: float32 data.
 constexpr double kValueTolerance = 1e-6;
 
@@ -25,7 +23,6 @@ struct JointTrack {
   Path path = Path::kRotation;
   KeyTrack track;
 };
-
 
 Result<Interpolation> ParseInterpolation(const std::string& text, const std::string& field) {
   if (text == "LINEAR" || text.empty()) return Interpolation::kLinear;
@@ -242,9 +239,9 @@ Result<MotionClip> ImportAnimation(const tinygltf::Model& model, const SkeletonI
   double last_s = 0.0;
   for (const JointTrack& t : tracks) last_s = std::max(last_s, t.track.times_s.back());
   const int64_t frames = FrameCount(last_s, rate);
-  if (static_cast<double>(frames) * skel.num_joints() > static_cast<double>(kMaxSamples))
+  if (static_cast<double>(frames) * skel.num_joints() > static_cast<double>(kMaxMotionJointFrames))
     return Unsupported(label + ": " + std::to_string(last_s) + " s at " + std::to_string(rate) + " Hz is " + Str(frames) +
-                       " frames x " + Str(skel.num_joints()) + " joints, more than the " + Str(kMaxSamples) + " samples we accept");
+                       " frames x " + Str(skel.num_joints()) + " joints, more than the " + Str(kMaxMotionJointFrames) + " samples we accept");
 
   MotionClip clip = MotionClip::RestPose(skel, static_cast<int>(frames), rate);
   clip.name = name;

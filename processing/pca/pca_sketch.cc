@@ -14,6 +14,7 @@ namespace mocapfill {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
 Status CheckSketch(const PcaModel& model, const Skeleton& skeleton, const MotionClip& sketch) {
   RETURN_IF_ERROR(RequireUniform(sketch, "pca"));
   RETURN_IF_ERROR(ValidatePcaModel(model).WithContext("pca model"));
