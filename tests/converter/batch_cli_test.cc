@@ -34,21 +34,13 @@ bool IsCompleteGlb(const std::string& bytes) {
   return length == bytes.size() && 20 + uint64_t{json_length} <= bytes.size();
 }
 
-std::vector<std::string> DefaultDbClips() {
-  std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(testing::FixturePath("default_db")))
-    if (entry.path().extension() == ".bvh") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 // Killed with SIGKILL at several moments of a batch: every file under a final name is whole;
 // the next batch into the folder finishes every output and removes the killed run's
 // temporary files.
 TEST(BatchCli, KilledBatchLeavesOnlyWholeOutputsAndTheNextRunCleansUp) {
   const std::string dir = testing::ScratchDir("batch_killed");
   std::vector<std::string> args = {"convert"};
-  const std::vector<std::string> clips = DefaultDbClips();
+  const std::vector<std::string> clips = testing::FixtureFiles("default_db", ".bvh");
   ASSERT_GE(clips.size(), 10u);
   args.insert(args.end(), clips.begin(), clips.end());
   for (const char* extra : {"-o", dir.c_str(), "--format", "glb", "-j", "2"}) args.push_back(extra);
@@ -83,7 +75,7 @@ TEST(BatchCli, KilledBatchLeavesOnlyWholeOutputsAndTheNextRunCleansUp) {
 // is always exactly one of the two conversions, never a mix, and no temporary is left.
 TEST(BatchCli, TwoWritersOfOneOutputLeaveOneWholeFile) {
   const std::string dir = testing::ScratchDir("batch_two_writers");
-  const std::vector<std::string> clips = DefaultDbClips();
+  const std::vector<std::string> clips = testing::FixtureFiles("default_db", ".bvh");
   const std::string a = clips.at(0), b = clips.at(1);
   ASSERT_EQ(Wait(StartCli({"convert", a, dir + "/a.glb"})), 0);
   ASSERT_EQ(Wait(StartCli({"convert", b, dir + "/b.glb"})), 0);

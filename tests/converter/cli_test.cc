@@ -39,13 +39,7 @@ RunResult RunCli(const std::string& args) { return RunProgram("", testing::Mocap
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
-std::vector<std::string> FixtureBvhFiles() {
-  std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(testing::FixturePath("bvh")))
-    if (entry.path().extension() == ".bvh") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<std::string> FixtureBvhFiles() { return testing::FixtureFiles("bvh", ".bvh"); }
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -136,6 +130,15 @@ TEST(Cli, RefusesToOverwriteAnInput) {
   EXPECT_FALSE(fs::exists(missing));
 }
 
+// A batch into `dir` wrote a .glb for each input, named after it.
+void ExpectGlbPerInput(const std::string& dir, const std::vector<std::string>& inputs) {
+  for (const std::string& in : inputs) {
+    const std::string out = dir + "/" + fs::path(in).stem().string() + ".glb";
+    EXPECT_TRUE(fs::exists(out)) << out;
+    EXPECT_EQ(ReadAll(out).substr(0, 4), "glTF") << out;
+  }
+}
+
 TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
   const std::string dir = testing::TestOutputDir("cli_batch");
   std::string args = "convert";
@@ -143,11 +146,7 @@ TEST(Cli, BatchConvertWritesOneValidOutputPerInput) {
   for (const std::string& in : inputs) args.append(" ").append(Quote(in));
   RunResult r = RunCli(args + " -o " + Quote(dir) + " -j 2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const std::string& in : inputs) {
-    const std::string out = dir + "/" + fs::path(in).stem().string() + ".glb";
-    ASSERT_TRUE(fs::exists(out)) << out;
-    EXPECT_EQ(ReadAll(out).substr(0, 4), "glTF");
-  }
+  ExpectGlbPerInput(dir, inputs);
 }
 
 // A batch with bad inputs among good ones (bad ones first, so the work has to go on past
@@ -165,11 +164,7 @@ TEST(Cli, BatchWithBadInputsConvertsTheGoodOnesAndReportsEveryBadOne) {
   for (const std::string& in : good) args.append(" ").append(Quote(in));
   RunResult r = RunCli(args + " -o " + Quote(dir) + " -j 2");
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  for (const std::string& in : good) {
-    const std::string out = dir + "/" + fs::path(in).stem().string() + ".glb";
-    ASSERT_TRUE(fs::exists(out)) << out;
-    EXPECT_EQ(ReadAll(out).substr(0, 4), "glTF");
-  }
+  ExpectGlbPerInput(dir, good);
   for (const std::string& in : bad) {
     EXPECT_NE(r.output.find("error: " + in), std::string::npos) << in << "\n" << r.output;
     EXPECT_FALSE(fs::exists(dir + "/" + fs::path(in).stem().string() + ".glb")) << in;

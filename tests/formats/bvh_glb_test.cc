@@ -41,13 +41,7 @@ Result<std::string> ThroughTheClip(const std::string& text, const std::string& p
   return glb.head + std::string(reinterpret_cast<const char*>(glb.bin.data()), glb.bin.size());
 }
 
-std::vector<std::string> FixtureBvhFiles() {
-  std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(FixturePath("bvh")))
-    if (entry.path().extension() == ".bvh") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<std::string> FixtureBvhFiles() { return testing::FixtureFiles("bvh", ".bvh"); }
 
 // Rows of `text` repeated until the motion section holds at least `min_bytes`, with the
 // Frames line rewritten to match.

@@ -14,13 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> BvhFixtures() {
-  std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(testing::FixturePath("bvh")))
-    if (entry.path().extension() == ".bvh") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<std::string> BvhFixtures() { return testing::FixtureFiles("bvh", ".bvh"); }
 
 class GltfFromBvh : public ::testing::TestWithParam<std::string> {};
 

@@ -20,19 +20,32 @@ namespace {
 std::string_view AsText(const uint8_t* data, size_t size) { return {reinterpret_cast<const char*>(data), size}; }
 
 // A folder holding the external files a fuzzed glTF may name ("buffer.bin", "a.bin"), so
-// that reading external buffers, and failing to, is exercised too. Made once per process.
-const std::string& GltfFolder() {
-  static const std::string folder = [] {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("mocapfill-fuzz-gltf-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+// that reading external buffers, and failing to, is exercised too. Made once per process and
+// removed when it exits (libFuzzer ends with exit(), which runs static destructors).
+class ExternalBufferFolder {
+ public:
+  ExternalBufferFolder()
+      : dir_(std::filesystem::temp_directory_path() / ("mocapfill-fuzz-gltf-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(dir_);
     std::string bytes(4096, '\0');
     for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 37) & 0xff);
     for (const char* name : {"buffer.bin", "a.bin", "animation.bin"})
-      std::ofstream(dir / name, std::ios::binary) << bytes;
-    return dir.string();
-  }();
-  return folder;
+      std::ofstream(dir_ / name, std::ios::binary) << bytes;
+  }
+  ~ExternalBufferFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  std::string path() const { return dir_.string(); }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+const std::string& GltfFolder() {
+  static const ExternalBufferFolder folder;
+  static const std::string path = folder.path();
+  return path;
 }
 
 // The same bytes with a consistent header: both binary formats check magic, version, sizes

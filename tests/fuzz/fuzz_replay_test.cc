@@ -5,13 +5,13 @@
 // accept what it is seeded with (tools/fuzz.sh seeds from the same files).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "tests/fuzz/fuzz_targets.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill::fuzz {
@@ -28,16 +28,11 @@ std::vector<std::string> FilesUnder(const fs::path& folder) {
   return files;
 }
 
-std::string Bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 int Replay(const FuzzTarget& target, const std::vector<std::string>& files) {
   int count = 0;
   for (const std::string& file : files) {
     SCOPED_TRACE(file);
-    const std::string bytes = Bytes(file);
+    const std::string bytes = testing::ReadAll(file);
     EXPECT_EQ(target.run(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), 0);
     ++count;
   }
@@ -58,22 +53,15 @@ TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
 }
 
 // Each target on the fixtures of its format, good and bad ones alike.
-TEST(FuzzSeeds, BvhFixtures) {
-  std::vector<std::string> files;
-  for (const std::string& file : FilesUnder(testing::FixturePath("")))
-    if (fs::path(file).extension() == ".bvh") files.push_back(file);
-  EXPECT_GE(Replay(Target("bvh"), files), 40);
-}
+TEST(FuzzSeeds, BvhFixtures) { EXPECT_GE(Replay(Target("bvh"), testing::FixtureFiles("", ".bvh")), 40); }
 
 TEST(FuzzSeeds, GltfFixtures) {
-  std::vector<std::string> files;
-  for (const std::string& file : FilesUnder(testing::FixturePath("")))
-    if (fs::path(file).extension() == ".gltf" || fs::path(file).extension() == ".glb") files.push_back(file);
-  EXPECT_GE(Replay(Target("gltf"), files), 10);
+  const int gltf = Replay(Target("gltf"), testing::FixtureFiles("", ".gltf"));
+  EXPECT_GE(gltf + Replay(Target("gltf"), testing::FixtureFiles("", ".glb")), 10);
 }
 
 TEST(FuzzSeeds, PipelineFixtures) {
-  EXPECT_GE(Replay(Target("pipeline"), FilesUnder(testing::FixturePath("pipelines"))), 6);
+  EXPECT_GE(Replay(Target("pipeline"), testing::FixtureFiles("pipelines", ".json")), 6);
 }
 
 }  // namespace

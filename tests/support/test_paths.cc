@@ -22,15 +22,27 @@ std::string DataDir() {
 
 std::string DataPath(const std::string& relative) { return DataDir() + "/" + relative; }
 
-std::vector<std::string> CorpusFiles(const std::string& folder, const std::string& ext) {
+namespace {
+
+std::vector<std::string> FilesWithExtension(const std::string& folder, const std::string& ext) {
   std::vector<std::string> files;
-  const std::string root = DataDir();
-  if (root.empty()) return files;
   std::error_code ec;
-  for (const auto& entry : fs::recursive_directory_iterator(root + "/" + folder, ec))
+  for (const auto& entry : fs::recursive_directory_iterator(folder, ec))
     if (entry.is_regular_file() && entry.path().extension() == ext) files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+}  // namespace
+
+std::vector<std::string> FixtureFiles(const std::string& folder, const std::string& ext) {
+  return FilesWithExtension(FixturePath(folder), ext);
+}
+
+std::vector<std::string> CorpusFiles(const std::string& folder, const std::string& ext) {
+  const std::string root = DataDir();
+  if (root.empty()) return {};
+  return FilesWithExtension(root + "/" + folder, ext);
 }
 
 std::string ScratchDir(const std::string& test_name) {

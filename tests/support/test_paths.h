@@ -12,6 +12,9 @@ namespace mocapfill::testing {
 // Absolute path of a file under fixtures/, e.g. FixturePath("bvh/cmu_01_01_short.bvh").
 std::string FixturePath(const std::string& relative);
 
+// Every file under fixtures/<folder> (recursively) whose extension is `ext` (".bvh"), sorted.
+std::vector<std::string> FixtureFiles(const std::string& folder, const std::string& ext);
+
 // The shared corpus folder, or "" when it is absent.
 std::string DataDir();
 
