@@ -1,5 +1,6 @@
 // Automatic humanoid mapping. Names propose, structure decides:
-//   1. the upper legs and the hands are found by name (with their side);
+//   1. the upper legs and the hands are found by name (with their side); those the names miss
+//      (no side word, or no name at all) by the rest pose (rig_limbs_by_pose.h);
 //   2. each leg is walked down (upper leg, lower leg, foot, toes) and each arm up from the
 //      hand (lower arm, upper arm, then a side joint under the torso is the shoulder): so
 //      SMPL's L_Shoulder and the Biovision LeftShoulder become upper arms, and SMPL's L_Foot
@@ -17,6 +18,7 @@
 #include <set>
 #include <sstream>
 
+#include "processing/retargeting/rig_limbs_by_pose.h"
 #include "processing/retargeting/rig_names.h"
 #include "processing/retargeting/rig_structure.h"
 
@@ -70,6 +72,7 @@ NameKind KindOfBone(HumanoidBone bone) {
 struct AutoResult {
   RigMapping mapping;
   std::vector<std::string> hips_problem;  // non-empty: the hips could not be decided (message parts)
+  std::string pose_problem;  // why the pose did not show the limbs the names missed
 };
 
 void MapLeg(const RigStructure& rig, int upper, bool left, RigMapping& m) {
@@ -84,7 +87,7 @@ void MapLeg(const RigStructure& rig, int upper, bool left, RigMapping& m) {
 }
 
 // Returns the joint the arm hangs from (the torso joint), or -1.
-int MapArm(const RigStructure& rig, int hand, bool left, RigMapping& m) {
+int MapArm(const RigStructure& rig, int hand, int other_hand, bool left, RigMapping& m) {
   const int lower = rig.PrevUp(hand);
   const int upper = lower >= 0 ? rig.PrevUp(lower) : -1;
   if (upper < 0) return -1;
@@ -94,8 +97,12 @@ int MapArm(const RigStructure& rig, int hand, bool left, RigMapping& m) {
   const int above = rig.PrevUp(upper);
   if (above < 0) return -1;
   // A clavicle is a side joint between the torso and the upper arm; a torso joint (no side,
-  // the neck's parent) is where the arm starts directly.
-  if (rig.name(above).side != Side::kNone || rig.name(above).kind == NameKind::kShoulder) {
+  // the neck's parent) is where the arm starts directly. A joint whose name says nothing is a
+  // clavicle when the other arm does not hang from it.
+  const rig_names::JointName& said = rig.name(above);
+  const bool unnamed_side_joint =
+      said.kind == NameKind::kUnknown && said.side == Side::kNone && other_hand >= 0 && !rig.IsAncestor(above, other_hand);
+  if (said.side != Side::kNone || said.kind == NameKind::kShoulder || unnamed_side_joint) {
     m.joints[BoneIndex(left ? B::kLeftShoulder : B::kRightShoulder)] = above;
     return rig.PrevUp(above);
   }
@@ -125,7 +132,8 @@ void MapTorso(const RigStructure& rig, int hips, int top, RigMapping& m) {
 }
 
 void MapNeckAndHead(const RigStructure& rig, int top, RigMapping& m) {
-  std::vector<int> chain = rig.NeckChain(top);  // joints above the top torso joint, head last
+  // The joints above the top torso joint, head last.
+  std::vector<int> chain = rig.NeckChain(top, {m.joint(B::kLeftHand), m.joint(B::kRightHand)});
   if (chain.empty()) return;
   m.joints[BoneIndex(B::kHead)] = chain.back();
   if (chain.size() >= 2) m.joints[BoneIndex(B::kNeck)] = chain.front();
@@ -149,7 +157,36 @@ int OverriddenJoint(const Skeleton& skeleton, const std::map<std::string, std::s
 
 // The chains start from the upper legs and the hands: named ones, or those a user override
 // names (so that overriding a hand the names miss maps its whole arm).
-AutoResult MapAutomatically(const RigStructure& rig, const std::map<std::string, std::string>& overrides) {
+// Fills the anchors the names missed from the limbs the pose shows (rig_limbs_by_pose.h).
+void AnchorsFromPose(const RigStructure& rig, const std::vector<Eigen::Vector3d>& pose, int legs[2], int hands[2],
+                     AutoResult& out) {
+  if (legs[0] >= 0 && legs[1] >= 0 && hands[0] >= 0 && hands[1] >= 0) return;
+  if (pose.empty()) return;
+  std::optional<LimbsByPose> limbs = FindLimbsByPose(rig, pose, out.pose_problem);
+  if (!limbs) return;
+  const auto fill = [](int named[2], const int seen[2]) {
+    for (int side = 0; side < 2; ++side)
+      if (named[side] < 0 && seen[side] >= 0 && seen[side] != named[1 - side]) named[side] = seen[side];
+    if (named[0] >= 0 && named[0] == named[1]) named[1] = -1;
+  };
+  const int before[4] = {legs[0], legs[1], hands[0], hands[1]};
+  fill(legs, limbs->upper_leg);
+  fill(hands, limbs->hand);
+  std::string found;
+  const int after[4] = {legs[0], legs[1], hands[0], hands[1]};
+  const char* what[4] = {"leftUpperLeg", "rightUpperLeg", "leftHand", "rightHand"};
+  for (int i = 0; i < 4; ++i)
+    if (before[i] < 0 && after[i] >= 0)
+      found += (found.empty() ? "" : ", ") + std::string(what[i]) + " " + Quoted(rig.skeleton().name(after[i]));
+  if (found.empty()) return;
+  out.mapping.notes.push_back("found by the rest pose, not by name: " + found);
+  if (!limbs->sides_seen)
+    out.mapping.warnings.push_back("the rest pose shows no forward direction (no toes ahead of the ankles): left "
+                                   "and right of the limbs found by pose are a guess; a --map can fix them");
+}
+
+AutoResult MapAutomatically(const RigStructure& rig, const std::vector<Eigen::Vector3d>& pose,
+                            const std::map<std::string, std::string>& overrides) {
   AutoResult out;
   RigMapping& m = out.mapping;
   m.family = rig_names::DetectFamily(rig.skeleton());
@@ -157,14 +194,16 @@ AutoResult MapAutomatically(const RigStructure& rig, const std::map<std::string,
     const int given = OverriddenJoint(rig.skeleton(), overrides, bone);
     return given >= 0 ? given : rig.BestByName(kind, side);
   };
-  const int leg_l = anchor(B::kLeftUpperLeg, NameKind::kUpperLeg, Side::kLeft);
-  const int leg_r = anchor(B::kRightUpperLeg, NameKind::kUpperLeg, Side::kRight);
+  int legs[2] = {anchor(B::kLeftUpperLeg, NameKind::kUpperLeg, Side::kLeft),
+                 anchor(B::kRightUpperLeg, NameKind::kUpperLeg, Side::kRight)};
+  int hands[2] = {anchor(B::kLeftHand, NameKind::kHand, Side::kLeft),
+                  anchor(B::kRightHand, NameKind::kHand, Side::kRight)};
+  AnchorsFromPose(rig, pose, legs, hands, out);
+  const int leg_l = legs[0], leg_r = legs[1], hand_l = hands[0], hand_r = hands[1];
   if (leg_l >= 0) MapLeg(rig, leg_l, true, m);
   if (leg_r >= 0) MapLeg(rig, leg_r, false, m);
-  const int hand_l = anchor(B::kLeftHand, NameKind::kHand, Side::kLeft);
-  const int hand_r = anchor(B::kRightHand, NameKind::kHand, Side::kRight);
-  const int top_l = hand_l >= 0 ? MapArm(rig, hand_l, true, m) : -1;
-  const int top_r = hand_r >= 0 ? MapArm(rig, hand_r, false, m) : -1;
+  const int top_l = hand_l >= 0 ? MapArm(rig, hand_l, hand_r, true, m) : -1;
+  const int top_r = hand_r >= 0 ? MapArm(rig, hand_r, hand_l, false, m) : -1;
 
   // Hips: where the legs meet; else the one joint named like hips.
   const std::vector<int> hips_named = rig.AllByName(NameKind::kHips);
@@ -310,15 +349,17 @@ Status CheckRequired(const RigStructure& rig, const AutoResult& automatic, const
   for (HumanoidBone b : missing) names += (names.empty() ? "" : ", ") + std::string(HumanoidBoneName(b));
   const bool no_limbs = rig.AllByName(NameKind::kUpperLeg).empty() && rig.AllByName(NameKind::kHand).empty() &&
                         overrides.empty();
-  if (no_limbs)
+  if (no_limbs && m.joint(B::kLeftUpperLeg) < 0 && m.joint(B::kLeftHand) < 0)
     return InvalidData("not a humanoid rig: no joint is named like a leg (UpLeg, UpperLeg, Thigh, Hip) or a hand "
-                       "(Hand, Wrist); required bones missing: " +
-                       names);
+                       "(Hand, Wrist)" +
+                       (automatic.pose_problem.empty() ? std::string() : ", and " + automatic.pose_problem) +
+                       "; required bones missing: " + names);
   std::string detail;
   const bool hips_missing = std::find(missing.begin(), missing.end(), B::kHips) != missing.end();
   if (hips_missing && !automatic.hips_problem.empty()) {
     for (const std::string& p : automatic.hips_problem) detail += "; " + p;
   }
+  if (!automatic.pose_problem.empty()) detail += "; by the rest pose: " + automatic.pose_problem;
   for (HumanoidBone b : missing) {
     if (b == B::kHips && !automatic.hips_problem.empty()) continue;
     detail += "; no " + std::string(HumanoidBoneName(b)) + ": candidates considered: " +
@@ -352,7 +393,7 @@ int RigMapping::BoneOfJoint(int joint) const {
 Result<RigMapping> MapHumanoid(const Skeleton& skeleton, const std::vector<Eigen::Vector3d>& pose_world_positions,
                                const RigMapOptions& options) {
   const RigStructure rig(skeleton);
-  AutoResult automatic = MapAutomatically(rig, options.overrides);
+  AutoResult automatic = MapAutomatically(rig, pose_world_positions, options.overrides);
   RigMapping& m = automatic.mapping;
   CheckSides(rig, pose_world_positions, m);
   NoteNameStructureDisagreements(rig, m);

@@ -127,7 +127,7 @@ JointName ParseJointName(std::string_view full_name) {
     if (std::isalnum(static_cast<unsigned char>(c))) out.stem += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   out.helper = HelperOf(out.stem, out.side, numbered_half);
   out.kind = out.helper.empty() ? KindOfStem(out.stem, out.side) : NameKind::kUnknown;
-  out.lower_back = out.stem == "lowerback";
+  out.lower_back = WithoutDigits(out.stem) == "lowerback";
   return out;
 }
 

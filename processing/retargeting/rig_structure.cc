@@ -71,9 +71,14 @@ bool RigStructure::IsAncestor(int ancestor, int j) const {
 }
 
 int RigStructure::CommonAncestor(int a, int b) const {
-  for (int k = a; k != kNoParent; k = skeleton_.parent(k))
-    if (IsAncestor(k, b)) return k;
-  return -1;
+  while (depth_[a] > depth_[b]) a = skeleton_.parent(a);  // one walk up, however deep the rig
+  while (depth_[b] > depth_[a]) b = skeleton_.parent(b);
+  while (a != b) {
+    a = skeleton_.parent(a);
+    b = skeleton_.parent(b);
+    if (a == kNoParent || b == kNoParent) return -1;
+  }
+  return a;
 }
 
 std::vector<int> RigStructure::TorsoChain(int hips, int top) const {
@@ -90,7 +95,7 @@ std::vector<int> RigStructure::TorsoChain(int hips, int top) const {
   return chain;
 }
 
-std::vector<int> RigStructure::NeckChain(int top) const {
+std::vector<int> RigStructure::NeckChain(int top, const std::vector<int>& hands) const {
   int head = -1;
   for (int j = 0; j < skeleton_.num_joints(); ++j)
     if (names_[j].kind == NameKind::kHead && names_[j].side == Side::kNone && j != top && IsAncestor(top, j) &&
@@ -107,8 +112,12 @@ std::vector<int> RigStructure::NeckChain(int top) const {
   // without a side and without helpers, to its end.
   for (int k = top;;) {
     int next = -1;
-    for (int c : children_[k])
-      if (names_[c].side == Side::kNone && !IsHelper(c) && (next < 0 || subtree_size_[c] > subtree_size_[next])) next = c;
+    for (int c : children_[k]) {
+      const bool to_a_hand = std::any_of(hands.begin(), hands.end(), [&](int h) { return h >= 0 && IsAncestor(c, h); });
+      if (names_[c].side == Side::kNone && !IsHelper(c) && !to_a_hand &&
+          (next < 0 || subtree_size_[c] > subtree_size_[next]))
+        next = c;
+    }
     if (next < 0) break;
     chain.push_back(next);
     k = next;

@@ -39,8 +39,9 @@ class RigStructure {
   // other joints remain.
   std::vector<int> TorsoChain(int hips, int top) const;
   // From the top torso joint (excluded) up to the head (included): to the joint named "head"
-  // when there is one above `top`, else along the middle chain that carries no arm.
-  std::vector<int> NeckChain(int top) const;
+  // when there is one above `top`, else along the middle chain: no side in its names, and
+  // not leading to any of `hands`.
+  std::vector<int> NeckChain(int top, const std::vector<int>& hands) const;
 
   // The body frame of a pose as columns (left, up, forward), when the pose shows it: up is
   // +Y when the head is above the hips, else hips to head; forward is from the ankles to the

@@ -10,6 +10,7 @@
 #include "processing/retargeting/proportions.h"
 #include "processing/retargeting/rest_pose.h"
 #include "processing/retargeting/rig_mapping.h"
+#include "processing/retargeting/rig_names.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
@@ -338,6 +339,79 @@ TEST(RigMappingSides, MirroredRigGeometryWins) {
   Result<RigMapping> plain = MapHumanoid(s.skeleton, ZeroPose(s.skeleton).WorldPositions(s.skeleton));
   ASSERT_TRUE(plain.ok());
   EXPECT_TRUE(plain->warnings.empty());
+}
+
+// The skeleton with every joint renamed by `rename(index, name)`.
+template <typename Rename>
+Skeleton Renamed(const Skeleton& skeleton, Rename rename) {
+  std::vector<Joint> joints = skeleton.joints();
+  for (size_t i = 0; i < joints.size(); ++i) joints[i].name = rename(static_cast<int>(i), joints[i].name);
+  Result<Skeleton> out = Skeleton::Build(joints);
+  EXPECT_TRUE(out.ok()) << out.status().message();
+  return out.ok() ? std::move(out).value() : Skeleton{};
+}
+
+// Maps `renamed` (the same joints as `scene`'s, other names) with the named rig's chosen rest
+// and checks that `bones` land on the same joints as with the names.
+void ExpectSameJoints(const Scene& scene, const Skeleton& renamed, const std::vector<HumanoidBone>& bones) {
+  const RigMapping named = MapScene(scene);
+  Result<RigRest> rest = ChooseRest(scene, named, RestSource::kAuto);
+  ASSERT_TRUE(rest.ok()) << rest.status().message();
+  Result<RigMapping> m = MapHumanoid(renamed, rest->WorldPositions(scene.skeleton));
+  ASSERT_TRUE(m.ok()) << m.status().message();
+  for (HumanoidBone bone : bones) {
+    const int j = m->joint(bone), want = named.joint(bone);
+    EXPECT_EQ(j, want) << HumanoidBoneName(bone) << ": " << (j >= 0 ? scene.skeleton.name(j) : "(none)")
+                       << " instead of " << (want >= 0 ? scene.skeleton.name(want) : "(none)");
+  }
+  EXPECT_TRUE(m->warnings.empty()) << m->warnings.front();
+}
+
+// Every bone: sides and limbs come from the pose when the names carry no side word.
+std::vector<HumanoidBone> AllBones() {
+  std::vector<HumanoidBone> out;
+  for (int i = 0; i < kNumHumanoidBones; ++i) out.push_back(BoneAt(i));
+  return out;
+}
+
+// With no names at all, the limbs and the hips (the torso split and the head need words such
+// as "end" and "eye" to tell an end bone or an eye from the head).
+const std::vector<HumanoidBone> kLimbs = {
+    B::kHips,          B::kLeftUpperLeg,  B::kLeftLowerLeg,  B::kLeftFoot,      B::kRightUpperLeg,
+    B::kRightLowerLeg, B::kRightFoot,     B::kLeftUpperArm,  B::kLeftLowerArm,  B::kLeftHand,
+    B::kRightUpperArm, B::kRightLowerArm, B::kRightHand,     B::kLeftShoulder,  B::kRightShoulder};
+
+void ExpectPoseFindsLimbs(const std::string& path) {
+  SCOPED_TRACE(path);
+  const Scene s = Load(path);
+  // "LeftUpLeg" -> "UpLeg_12", "mixamorig:LeftHand" -> "Hand_30": the words without a side.
+  const Skeleton sideless = Renamed(s.skeleton, [](int i, const std::string& name) {
+    return rig_names::ParseJointName(name).stem + "_" + std::to_string(i);
+  });
+  ExpectSameJoints(s, sideless, AllBones());
+  const Skeleton anonymous = Renamed(s.skeleton, [](int i, const std::string&) { return "joint_" + std::to_string(i); });
+  ExpectSameJoints(s, anonymous, kLimbs);
+}
+
+TEST(RigMappingByPose, NamesWithoutSidesFixtures) {
+  for (const char* f : {"bvh/bandai_walk_normal_001_short.bvh", "bvh/cmu_01_01_short.bvh", "bvh/boxing_toes_short.bvh",
+                        "rigs/mixamo_prefixed.bvh", "rigs/smpl_body.bvh"})
+    ExpectPoseFindsLimbs(testing::FixturePath(f));
+}
+
+TEST(RigMappingByPose, NamesWithoutSidesCorpus) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  for (const char* f : {"geno/Geno.fbx", "geno/Geno_bind.bvh", "geno/Geno_stance.bvh", "cmu/01_01.bvh"})
+    ExpectPoseFindsLimbs(testing::DataPath(f));
+}
+
+// A rig the pose shows nothing humanoid in keeps the plain refusal, with the pose's reason.
+TEST(RigMappingByPose, NonHumanoidPoseSaysWhy) {
+  const Scene s = Load(testing::FixturePath("fbx/animation_with_skeleton.fbx"));
+  Result<RigMapping> m = MapHumanoid(s.skeleton, ZeroPose(s.skeleton).WorldPositions(s.skeleton));
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.status().message().find("not a humanoid rig"), std::string::npos) << m.status().message();
+  EXPECT_NE(m.status().message().find("rest pose"), std::string::npos) << m.status().message();
 }
 
 // Angle of the upper arm below horizontal, degrees.
