@@ -169,11 +169,15 @@ def rigify():
 # --- SMPL body joints: T-pose joint positions (metres, Y up, facing +Z) as printed in
 # luebbertevan/kikitora-internship, src/retarget.py (J_ABSOLUTE, first 22 rows = the SMPL body
 # joints), the same offsets as edoardocompagnucci/HSyn9DHPE's SMPL_BONE_OFFSETS_22. SMPL's
-# L_Hand/R_Hand (joints 22, 23) are not in these sources: left out, not invented.
+# L_Hand/R_Hand (joints 22, 23) are the wrists plus the offsets of ZhengyiLuo/PHC,
+# phc/data/assets/mjcf/smpl_humanoid.xml (commit fe5aaa946a9c1f183bbf10f181004b517a5e560c,
+# BSD-3-Clause): MuJoCo body positions in metres to 4 decimals, written as (z, x, y) of SMPL's
+# Y-up axes; their other body offsets equal J_ABSOLUTE's differences within 1e-4 m (same template).
+PHC_HAND_OFFSETS = {"L_Hand": (-0.0149, 0.084, -0.0082), "R_Hand": (-0.0103, -0.0846, -0.0061)}  # as printed: z x y
 SMPL_NAMES = ["Pelvis", "L_Hip", "R_Hip", "Spine1", "L_Knee", "R_Knee", "Spine2", "L_Ankle", "R_Ankle", "Spine3",
               "L_Foot", "R_Foot", "Neck", "L_Collar", "R_Collar", "Head", "L_Shoulder", "R_Shoulder", "L_Elbow",
-              "R_Elbow", "L_Wrist", "R_Wrist"]
-SMPL_PARENTS = [-1, 0, 0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 9, 9, 12, 13, 14, 16, 17, 18, 19]
+              "R_Elbow", "L_Wrist", "R_Wrist", "L_Hand", "R_Hand"]
+SMPL_PARENTS = [-1, 0, 0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 9, 9, 12, 13, 14, 16, 17, 18, 19, 20, 21]
 SMPL_J = [
     (-0.001795, -0.223333, 0.028219), (0.067725, -0.314740, 0.021404), (-0.069466, -0.313855, 0.023899),
     (-0.004328, -0.114370, 0.001523), (0.102001, -0.689938, 0.016908), (-0.107756, -0.696424, 0.015049),
@@ -184,6 +188,9 @@ SMPL_J = [
     (0.432050, 0.213179, -0.042374), (-0.428897, 0.211787, -0.041119), (0.681284, 0.222165, -0.043545),
     (-0.684196, 0.219560, -0.046679),
 ]
+for _name, (_z, _x, _y) in PHC_HAND_OFFSETS.items():
+    _wrist = SMPL_J[SMPL_PARENTS[SMPL_NAMES.index(_name)]]
+    SMPL_J.append((_wrist[0] + _x, _wrist[1] + _y, _wrist[2] + _z))
 
 
 def smpl():

@@ -410,6 +410,10 @@ std::string UnmappedJointReason(const Skeleton& skeleton, const RigMapping& mapp
   const int hips = mapping.joint(B::kHips);
   const int head = mapping.joint(B::kHead);
   if (hips >= 0 && rig.IsAncestor(joint, hips)) return "root above the hips";
+  for (B end : {B::kLeftHand, B::kRightHand})
+    if (mapping.has(end) && rig.IsAncestor(mapping.joint(end), joint)) return "below the hand (fingers, hand end)";
+  for (B end : {B::kLeftToes, B::kRightToes, B::kLeftFoot, B::kRightFoot})
+    if (mapping.has(end) && rig.IsAncestor(mapping.joint(end), joint)) return "below the foot (toe or heel end)";
   if (hips >= 0 && head >= 0 && rig.IsAncestor(hips, joint) && rig.IsAncestor(joint, head))
     return name.lower_back ? "lower-back helper (spine offset)" : "extra spine or neck joint (folded into its neighbours)";
   return "not a canonical bone";

@@ -1,7 +1,7 @@
 // The fill stage (issue #4): completes a sketch (keyed joints plus missing ones) from a motion
 // database with one of the methods of FillOptions, and reports where everything came from.
-// The sketch must already be in the database's joint order and rate (skeleton_map.h and
-// motion/resample.h bring it there).
+// The sketch must already be on the database's rig and at its rate (sketch_fill/ brings a
+// sketch on any rig there).
 #pragma once
 
 #include <memory>

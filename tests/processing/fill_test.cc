@@ -12,7 +12,6 @@
 #include "processing/synthesis/fill.h"
 #include "processing/synthesis/hierarchy.h"
 #include "processing/synthesis/sketch_signals.h"
-#include "processing/synthesis/skeleton_map.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
@@ -27,13 +26,7 @@ constexpr double kKeyToleranceDeg = 0.5;  // issue #4 key fidelity after texturi
 using testing::DefaultDb;
 
 // The shipped glTF sketch in database joint order.
-MotionClip Sketch() {
-  Result<Scene> scene = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
-  EXPECT_TRUE(scene.ok()) << scene.status().message();
-  Result<SkeletonMapping> mapping = MapSkeletons(scene->skeleton, scene->clips[0], DefaultDb().skeleton(), {});
-  EXPECT_TRUE(mapping.ok()) << mapping.status().message();
-  return ToDatabaseClip(*mapping, DefaultDb().skeleton(), scene->clips[0]);
-}
+MotionClip Sketch() { return testing::ShippedSketchOnDefaultDbRig(); }
 
 double MaxKeyErrorDeg(const MotionClip& sketch, const MotionClip& out) {
   double worst = 0.0;

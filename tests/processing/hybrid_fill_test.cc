@@ -16,7 +16,6 @@
 #include "processing/pca/pca_model_builder.h"
 #include "processing/synthesis/fill.h"
 #include "processing/synthesis/hybrid_fill.h"
-#include "processing/synthesis/skeleton_map.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
@@ -32,13 +31,7 @@ constexpr double kPositionKeyCm = 1.0;      // issue 5: keyed feet within 1 cm
 using testing::DefaultDb;
 
 // The shipped glTF sketch (hips and legs keyed every 8 frames) in database joint order.
-MotionClip Sketch() {
-  Result<Scene> scene = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
-  EXPECT_TRUE(scene.ok()) << scene.status().message();
-  Result<SkeletonMapping> mapping = MapSkeletons(scene->skeleton, scene->clips[0], DefaultDb().skeleton(), {});
-  EXPECT_TRUE(mapping.ok()) << mapping.status().message();
-  return ToDatabaseClip(*mapping, DefaultDb().skeleton(), scene->clips[0]);
-}
+MotionClip Sketch() { return testing::ShippedSketchOnDefaultDbRig(); }
 
 // Key error over the sketch's rotation keys, degrees: {mean, max}.
 std::pair<double, double> KeyErrorDeg(const MotionClip& sketch, const MotionClip& out) {

@@ -122,7 +122,9 @@ TEST(RigMappingFixtures, MixamoRigifySmpl) {
                        {B::kNeck, "Neck"}, {B::kHead, "Head"}, {B::kLeftShoulder, "L_Collar"},
                        {B::kLeftUpperArm, "L_Shoulder"}, {B::kLeftLowerArm, "L_Elbow"}, {B::kLeftHand, "L_Wrist"},
                        {B::kLeftUpperLeg, "L_Hip"}, {B::kLeftLowerLeg, "L_Knee"}, {B::kLeftFoot, "L_Ankle"},
-                       {B::kLeftToes, "L_Foot"}, {B::kRightUpperArm, "R_Shoulder"}});
+                       {B::kLeftToes, "L_Foot"}, {B::kRightUpperArm, "R_Shoulder"}, {B::kRightHand, "R_Wrist"}});
+    EXPECT_EQ(s.skeleton.num_joints(), 24);  // SMPL's 24, L_Hand and R_Hand included
+    EXPECT_EQ(UnmappedJointReason(s.skeleton, m, *s.skeleton.Find("L_Hand")), "below the hand (fingers, hand end)");
   }
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "formats/motion_io.h"
+#include "processing/retargeting/retarget_scene.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill::testing {
@@ -27,6 +28,19 @@ const MotionDatabase& DefaultDb() {
     return std::move(*built);
   }();
   return db;
+}
+
+MotionClip ShippedSketchOnDefaultDbRig() {
+  Result<Scene> sketch = ImportFile(FixturePath("sketches/walk_proud_002_legs8.glb"));
+  EXPECT_TRUE(sketch.ok()) << sketch.status().message();
+  if (!sketch.ok()) return {};
+  Scene character;
+  character.skeleton = DefaultDb().skeleton();
+  // One rig on both sides: retargeting copies the rotations and keys exactly.
+  Result<Scene> on_db = RetargetScene(*sketch, character);
+  EXPECT_TRUE(on_db.ok()) << on_db.status().message();
+  if (!on_db.ok() || on_db->clips.empty()) return {};
+  return std::move(on_db->clips.front());
 }
 
 }  // namespace mocapfill::testing
