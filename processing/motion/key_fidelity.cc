@@ -9,15 +9,10 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
-// The frames around `time_s` and the fraction towards the second: (i, i + 1, u) with
-// time_s(i) <= time_s < time_s(i + 1); (first, first, 0) or (last, last, 0) outside.
-struct Bracket {
-  int a = 0;
-  int b = 0;
-  double u = 0.0;
-};
 
-Bracket FindBracket(const MotionClip& clip, double time_s) {
+}  // namespace
+
+FrameBracket FindBracket(const MotionClip& clip, double time_s) {
   const int last = clip.num_frames - 1;
   if (last <= 0 || !(time_s > clip.time_s(0))) return {0, 0, 0.0};
   if (time_s >= clip.time_s(last)) return {last, last, 0.0};
@@ -37,22 +32,38 @@ Bracket FindBracket(const MotionClip& clip, double time_s) {
   return {lo, hi, std::clamp((time_s - t0) / (t1 - t0), 0.0, 1.0)};
 }
 
-struct KeySet {
-  std::vector<double> times;
-  std::vector<Eigen::Quaterniond> rotations;
-  std::vector<Eigen::Vector3d> translations;
-};
+RotationKeys RotationKeysOf(const MotionClip& clip, int joint) {
+  const JointKeys& k = clip.keys[joint];
+  if (k.has_exact_rotations() && k.rotation_times_s.size() == k.rotation_values.size())
+    return {k.rotation_times_s, k.rotation_values};
+  RotationKeys keys;
+  for (int f : k.rotation_frames) {
+    keys.times_s.push_back(clip.time_s(f));
+    keys.values.push_back(clip.rotation(f, joint));
+  }
+  return keys;
+}
 
-}  // namespace
+TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint) {
+  const JointKeys& k = clip.keys[joint];
+  if (k.has_exact_translations() && k.translation_times_s.size() == k.translation_values.size())
+    return {k.translation_times_s, k.translation_values};
+  TranslationKeys keys;
+  for (int f : k.translation_frames) {
+    keys.times_s.push_back(clip.time_s(f));
+    keys.values.push_back(clip.translation(f, joint));
+  }
+  return keys;
+}
 
 Eigen::Quaterniond SampleRotationAt(const MotionClip& clip, int joint, double time_s) {
-  const Bracket k = FindBracket(clip, time_s);
+  const FrameBracket k = FindBracket(clip, time_s);
   if (k.a == k.b || k.u == 0.0) return clip.rotation(k.a, joint).normalized();
   return clip.rotation(k.a, joint).slerp(k.u, clip.rotation(k.b, joint)).normalized();
 }
 
 Eigen::Vector3d SampleTranslationAt(const MotionClip& clip, int joint, double time_s) {
-  const Bracket k = FindBracket(clip, time_s);
+  const FrameBracket k = FindBracket(clip, time_s);
   if (k.a == k.b || k.u == 0.0) return clip.translation(k.a, joint);
   return (1.0 - k.u) * clip.translation(k.a, joint) + k.u * clip.translation(k.b, joint);
 }
@@ -74,15 +85,9 @@ Result<KeyErrors> MeasureKeyErrors(const Skeleton& written_skeleton, const Motio
     }
     KeyError e;
     e.joint = name;
-    // Rotation keys: exact when the source had them, else the keyed frames.
-    std::vector<double> times = keys.rotation_times_s;
-    std::vector<Eigen::Quaterniond> rotations = keys.rotation_values;
-    if (!keys.has_exact_rotations()) {
-      for (int f : keys.rotation_frames) {
-        times.push_back(sketch.time_s(f));
-        rotations.push_back(sketch.rotation(f, j));
-      }
-    }
+    const RotationKeys rotation_keys = RotationKeysOf(sketch, j);
+    const std::vector<double>& times = rotation_keys.times_s;
+    const std::vector<Eigen::Quaterniond>& rotations = rotation_keys.values;
     double sum = 0.0;
     for (size_t k = 0; k < times.size(); ++k) {
       const double deg = SampleRotationAt(written, *w, times[k]).angularDistance(rotations[k].normalized()) *
@@ -96,22 +101,16 @@ Result<KeyErrors> MeasureKeyErrors(const Skeleton& written_skeleton, const Motio
     }
     if (e.rotation_count) e.rotation_mean_deg = sum / e.rotation_count;
     rotation_sum += sum;
-    // Translation keys, likewise.
-    times = keys.translation_times_s;
-    std::vector<Eigen::Vector3d> translations = keys.translation_values;
-    if (!keys.has_exact_translations()) {
-      for (int f : keys.translation_frames) {
-        times.push_back(sketch.time_s(f));
-        translations.push_back(sketch.translation(f, j));
-      }
-    }
+    const TranslationKeys translation_keys = TranslationKeysOf(sketch, j);
+    const std::vector<Eigen::Vector3d>& translations = translation_keys.values;
     sum = 0.0;
-    for (size_t k = 0; k < times.size(); ++k) {
-      const double m = (SampleTranslationAt(written, *w, times[k]) - translations[k]).norm();
+    for (size_t k = 0; k < translations.size(); ++k) {
+      const double t = translation_keys.times_s[k];
+      const double m = (SampleTranslationAt(written, *w, t) - translations[k]).norm();
       sum += m;
       if (m > e.translation_max_m || e.translation_count == 0) {
         e.translation_max_m = m;
-        e.translation_max_at_s = times[k];
+        e.translation_max_at_s = t;
       }
       ++e.translation_count;
     }

@@ -14,6 +14,30 @@
 
 namespace mocapfill {
 
+// The frames around `time_s` and the fraction towards the second: (i, i + 1, u) with
+// time_s(i) <= time_s < time_s(i + 1); (first, first, 0) before the first frame and
+// (last, last, 0) from the last on. Uniform clips use their grid, explicit times a search.
+struct FrameBracket {
+  int a = 0;
+  int b = 0;
+  double u = 0.0;
+};
+FrameBracket FindBracket(const MotionClip& clip, double time_s);
+
+// A joint's keys at the source's exact times: its recorded key times and values where the
+// importer kept them (JointKeys::rotation_times_s, ...), else its keyed frames at their frame
+// times with the frame values.
+struct RotationKeys {
+  std::vector<double> times_s;
+  std::vector<Eigen::Quaterniond> values;
+};
+struct TranslationKeys {
+  std::vector<double> times_s;
+  std::vector<Eigen::Vector3d> values;
+};
+RotationKeys RotationKeysOf(const MotionClip& clip, int joint);
+TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint);
+
 // Joint `joint`'s local rotation at `time_s` seconds: slerp (short arc) between the two
 // frames whose times (MotionClip::time_s, uniform or explicit) surround it; the first or
 // last frame's value before the first and after the last frame. Unit quaternion.
@@ -50,9 +74,8 @@ struct KeyErrors {
   std::vector<std::string> unmatched_joints;
 };
 
-// For every joint with keys in `sketch`: its exact keys (JointKeys::rotation_times_s /
-// rotation_values, translation_*), or for a baked sketch (no exact keys) its keyed frames at
-// their frame times with the frame values; `written` is evaluated at those times with
+// For every joint with keys in `sketch`: its keys (RotationKeysOf, TranslationKeysOf);
+// `written` is evaluated at their times with
 // SampleRotationAt / SampleTranslationAt and compared. Joints are matched by name between
 // `written_skeleton` and `sketch_skeleton`.
 // Errors: either clip invalid for its skeleton (as MotionClip::Validate).

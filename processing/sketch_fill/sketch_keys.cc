@@ -27,34 +27,6 @@ bool IsAncestorOrSelf(const Skeleton& skeleton, int ancestor, int joint) {
   return false;
 }
 
-// Frame interval [i, i + 1] and fraction u for `time_s` (clamped to the clip's span).
-void Locate(const MotionClip& clip, double time_s, int& i, double& u) {
-  const int last = clip.num_frames - 1;
-  if (last <= 0 || time_s <= clip.time_s(0)) {
-    i = 0;
-    u = 0.0;
-    return;
-  }
-  if (time_s >= clip.time_s(last)) {
-    i = last - 1;
-    u = 1.0;
-    return;
-  }
-  if (clip.frame_times_s.empty()) {
-    const double s = time_s * clip.sample_rate_hz;
-    i = std::min(static_cast<int>(std::floor(s)), last - 1);
-    u = s - i;
-  } else {
-    const auto it = std::upper_bound(clip.frame_times_s.begin(), clip.frame_times_s.end(), time_s);
-    i = static_cast<int>(it - clip.frame_times_s.begin()) - 1;
-    i = std::clamp(i, 0, last - 1);
-    const double t0 = clip.frame_times_s[i], t1 = clip.frame_times_s[i + 1];
-    u = (time_s - t0) / (t1 - t0);
-  }
-  u = std::clamp(u, 0.0, 1.0);
-}
-
-
 // Linear interpolation of displacements between keys, held outside them.
 template <typename T>
 T Interpolate(const std::vector<double>& times, const std::vector<T>& values, double t) {
@@ -105,36 +77,6 @@ Status CheckTranslationKeys(const Skeleton& skeleton, const MotionClip& clip, in
   return OkStatus();
 }
 
-RotationKeys RotationKeysOf(const MotionClip& clip, int joint) {
-  RotationKeys keys;
-  const JointKeys& k = clip.keys[joint];
-  if (!k.rotation_times_s.empty() && k.rotation_times_s.size() == k.rotation_values.size()) {
-    keys.times_s = k.rotation_times_s;
-    keys.values = k.rotation_values;
-    return keys;
-  }
-  for (int f : k.rotation_frames) {
-    keys.times_s.push_back(clip.time_s(f));
-    keys.values.push_back(clip.rotation(f, joint));
-  }
-  return keys;
-}
-
-TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint) {
-  TranslationKeys keys;
-  const JointKeys& k = clip.keys[joint];
-  if (!k.translation_times_s.empty() && k.translation_times_s.size() == k.translation_values.size()) {
-    keys.times_s = k.translation_times_s;
-    keys.values = k.translation_values;
-    return keys;
-  }
-  for (int f : k.translation_frames) {
-    keys.times_s.push_back(clip.time_s(f));
-    keys.values.push_back(clip.translation(f, joint));
-  }
-  return keys;
-}
-
 std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& uniform) {
   double end = sketch.time_s(sketch.num_frames - 1);
   std::vector<double> keys;
@@ -163,10 +105,8 @@ std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& 
 }
 
 int NearestFrame(const MotionClip& clip, double time_s) {
-  int i = 0;
-  double u = 0.0;
-  Locate(clip, time_s, i, u);
-  return u > 0.5 ? std::min(i + 1, clip.num_frames - 1) : i;
+  const FrameBracket k = FindBracket(clip, time_s);
+  return k.u > 0.5 ? k.b : k.a;
 }
 
 void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {

@@ -11,6 +11,7 @@
 #include "processing/core/motion_clip.h"
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
+#include "processing/motion/key_fidelity.h"
 
 namespace mocapfill {
 
@@ -24,19 +25,6 @@ Status ApplyKeyOverrides(const Skeleton& skeleton, const std::vector<std::string
 // they are listed in `position_keys`.
 Status CheckTranslationKeys(const Skeleton& skeleton, const MotionClip& clip, int hips,
                             const std::vector<std::string>& position_keys);
-
-// A joint's keys at the source's exact times: its recorded key times and values where the
-// importer kept them, else its keyed frames at their frame times.
-struct RotationKeys {
-  std::vector<double> times_s;
-  std::vector<Eigen::Quaterniond> values;
-};
-struct TranslationKeys {
-  std::vector<double> times_s;
-  std::vector<Eigen::Vector3d> values;
-};
-RotationKeys RotationKeysOf(const MotionClip& clip, int joint);
-TranslationKeys TranslationKeysOf(const MotionClip& clip, int joint);
 
 // Output sample times: the frames of `rate_hz` over the sketch's duration, plus every key
 // time that is not on that grid (then `uniform` is false).
