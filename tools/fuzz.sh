@@ -20,7 +20,7 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || ((seconds == 0)); then
 fi
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MOCAPFILL_FUZZ_BUILD:-$root/build-fuzz}
-targets=${MOCAPFILL_FUZZ_TARGETS:-bvh gltf mfdb pca pipeline maps}
+targets=${MOCAPFILL_FUZZ_TARGETS:-bvh gltf mfdb pca pipeline maps fbx wire}
 jobs=${MOCAPFILL_FUZZ_JOBS:-$(nproc)}
 
 bash "$root/tools/install_deps.sh" --fuzz
@@ -34,7 +34,7 @@ cmake --build "$build" -j "$(nproc)" --target fuzzers mocapfill_full
 # a few maps. Files over 64 KiB are left out (libFuzzer mutates best around small inputs).
 seeds=$build/fuzz-seeds
 rm -rf "$seeds"
-for t in bvh gltf mfdb pca pipeline maps; do mkdir -p "$seeds/$t"; done
+for t in bvh gltf mfdb pca pipeline maps fbx wire; do mkdir -p "$seeds/$t"; done
 copy_small() {  # copy_small <target> <find name patterns...>
   local target=$1
   shift
@@ -45,6 +45,7 @@ copy_small() {  # copy_small <target> <find name patterns...>
 copy_small bvh -name '*.bvh'
 copy_small gltf -name '*.gltf' -o -name '*.glb'
 copy_small pipeline -name '*.json'
+copy_small fbx -name '*.fbx'
 full=$build/converter/mocapfill-full
 export ASAN_OPTIONS=detect_leaks=0
 "$full" db build "$root/fixtures/bvh/bandai_walk_normal_001_short.bvh" -o "$seeds/mfdb/walk.mfdb" >/dev/null
@@ -53,6 +54,7 @@ unset ASAN_OPTIONS
 printf '{"LHipJoint": "UpperLeg_L", "RHipJoint": "UpperLeg_R"}' >"$seeds/maps/joint_names.json"
 printf '{"LeftUpLeg": "leftUpperLeg", "Spine1": "", "Neck1": null}' >"$seeds/maps/rig_map.json"
 printf '{}' >"$seeds/maps/empty.json"
+printf 'patch' >"$seeds/wire/patch.bin"  # the wire target patches a valid answer of its own
 
 # One run per target, JOBS at a time; each writes its log, the summary is printed at the end.
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "formats/assimp/assimp_module_abi.h"
+#include "formats/assimp/isolated_read.h"
 
 #ifndef MOCAPFILL_ASSIMP_MODULE_BUILD_PATH
 #define MOCAPFILL_ASSIMP_MODULE_BUILD_PATH ""
@@ -91,11 +92,15 @@ const Module& GetModule() {
 }  // namespace
 
 Result<Scene> ReadWithAssimpModule(const std::string& path, const ImportOptions& options) {
-  const Module& module = GetModule();
+  const Module& module = GetModule();  // loaded here, before the fork, so the child need not
   if (module.read == nullptr) return Unsupported(path + ": cannot read this format: " + module.error);
-  Result<Scene> scene = Status(ErrorCode::kInternal, "the Assimp plug-in returned nothing");
-  module.read(&path, &options, &scene);
-  return scene;
+  // Assimp is known to crash on some files (a 200,000-deep BVH overflows its stack): it reads
+  // in a child process, whose failure becomes this file's error.
+  return ReadIsolated(path, IsolationLimitsFromEnvironment(), [&]() -> Result<Scene> {
+    Result<Scene> scene = Status(ErrorCode::kInternal, "the Assimp plug-in returned nothing");
+    module.read(&path, &options, &scene);
+    return scene;
+  });
 }
 
 }  // namespace mocapfill

@@ -80,6 +80,29 @@ Status CheckExternalFile(const std::string& field, const std::string& uri, const
 
 }  // namespace
 
+Status CheckJsonSize(std::string_view json_text) {
+  size_t objects = 0, values = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : json_text) {
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    else if (c == '{') ++objects, ++values;
+    else if (c == '[' || c == ',') ++values;
+  }
+  if (objects > kMaxGltfJsonObjects)
+    return InvalidData("JSON: " + std::to_string(objects) + " objects; at most " + std::to_string(kMaxGltfJsonObjects) +
+                       " are read (accessors, nodes and the like; this is not a character scene)");
+  if (values > kMaxGltfJsonValues)
+    return InvalidData("JSON: about " + std::to_string(values) + " values; at most " +
+                       std::to_string(kMaxGltfJsonValues) + " are read");
+  return OkStatus();
+}
+
 Status CheckBuffers(std::string_view json_text, const std::string& base_dir, std::optional<size_t> glb_bin_bytes) {
   json doc;
   try {

@@ -62,8 +62,10 @@ Result<tinygltf::Model> Load(const std::string& bytes, const std::string& path, 
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) return Unsupported("files over 4 GB are not supported");
   if (binary) {
     ASSIGN_OR_RETURN(const gltf_internal::GlbParts parts, gltf_internal::ParseGlbContainer(bytes));
+    RETURN_IF_ERROR(gltf_internal::CheckJsonSize(parts.json));
     RETURN_IF_ERROR(gltf_internal::CheckBuffers(parts.json, base_dir, parts.bin_size_bytes));
   } else {
+    RETURN_IF_ERROR(gltf_internal::CheckJsonSize(bytes));
     RETURN_IF_ERROR(gltf_internal::CheckBuffers(bytes, base_dir, std::nullopt));
   }
   tinygltf::TinyGLTF loader;

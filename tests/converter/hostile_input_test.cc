@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <filesystem>
 #include <vector>
 
 #include "tests/support/cli_run.h"
@@ -148,6 +149,70 @@ TEST(HostileInput, GltfAccessorCountOf2To31IsRefused) {
   EXPECT_NE(run.output.find(path), std::string::npos) << run.output;
   if (kMeasuresMemory) {
     EXPECT_LT(run.max_rss_mb, 200);
+  }
+}
+
+// A glTF of `accessors` accessors (each a small valid object), written in large pieces.
+void WriteGltfOfAccessors(const std::string& path, int accessors) {
+  std::ofstream out(path, std::ios::binary);
+  out << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"name": "root"}],
+    "buffers": [{"byteLength": 8, "uri": "data:application/octet-stream;base64,AAAAAAAAgD8="}],
+    "bufferViews": [{"buffer": 0, "byteLength": 8}], "accessors": [)";
+  const std::string one = R"({"bufferView":0,"componentType":5126,"count":2,"type":"SCALAR"})";
+  std::string block;
+  for (int i = 0; i < 10'000; ++i) block += one + ",";
+  for (int written = 0; written + 10'000 < accessors; written += 10'000) out << block;
+  for (int i = 0; i < accessors % 10'000 + (accessors % 10'000 == 0 ? 10'000 : 0); ++i) out << (i ? "," : "") << one;
+  out << "]}";
+}
+
+// Past a million JSON objects a glTF is refused before any parse (tinygltf would hold about
+// 1.1 KB per accessor: ten million take 11 GB).
+void ExpectGltfRefusedForItsSize(const std::string& test, int accessors, long max_rss_mb) {
+  const std::string dir = testing::ScratchDir(test);
+  const std::string path = dir + "/accessors.gltf";
+  WriteGltfOfAccessors(path, accessors);
+  const LimitedRun run = RunLimited({"convert", path, dir + "/out.glb"}, dir, 120);
+  EXPECT_FALSE(run.timed_out);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find(path + ": JSON: " + std::to_string(accessors + 6) + " objects; at most 1000000"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out.glb"));
+  if (kMeasuresMemory) {
+    EXPECT_LT(run.max_rss_mb, max_rss_mb);  // the mapped file's pages count; nothing else grows
+  }
+}
+
+TEST(HostileInput, GltfOfAMillionObjectsIsRefusedBeforeParsing) {
+  ExpectGltfRefusedForItsSize("hostile_gltf_million", 1'000'000, 200);
+}
+
+TEST(HostileInput, GltfOfTenMillionAccessorsIsRefusedWithinTheMemoryBound) {
+  ExpectGltfRefusedForItsSize("hostile_gltf_ten_million", 10'000'000, 900);
+}
+
+// Assimp reads in a child process: one that runs out of time or memory ends as exit 2
+// naming the file, and writes nothing.
+TEST(HostileInput, AssimpOutOfTimeOrMemoryExitsTwoNamingTheFile) {
+  const std::string dir = testing::ScratchDir("hostile_assimp");
+  const std::string fbx = testing::FixturePath("fbx/animation_with_skeleton.fbx");
+  struct Case {
+    const char* variable;
+    const char* value;
+    const char* says;
+  };
+  std::vector<Case> cases = {{"MOCAPFILL_ASSIMP_TIMEOUT_S", "0.000001", "took longer than 1e-06 s on this file"}};
+  // Out of memory ends in Assimp's own bad_alloc error or in an abort (fixture: the latter).
+  if (kMeasuresMemory) cases.push_back({"MOCAPFILL_ASSIMP_MEMORY_MB", "1", "memory (limit 1 MiB; MOCAPFILL_ASSIMP_MEMORY_MB"});
+  for (const Case& c : cases) {
+    setenv(c.variable, c.value, 1);
+    const LimitedRun run = RunLimited({"convert", fbx, dir + "/out.glb"}, dir, 60);
+    unsetenv(c.variable);
+    EXPECT_EQ(run.exit_code, 2) << c.variable << ": " << run.output;
+    EXPECT_NE(run.output.find(fbx + ": the Assimp reader "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(c.says), std::string::npos) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.glb"));
   }
 }
 

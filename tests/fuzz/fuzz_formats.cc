@@ -1,16 +1,20 @@
-// Fuzz targets of the motion file readers: BVH, glTF/GLB, .mfdb and .pca.
+// Fuzz targets of the motion file readers: BVH, glTF/GLB, .mfdb, .pca, FBX (Assimp in its
+// child process) and the child's answer.
 #include <unistd.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
 
+#include "formats/assimp/scene_wire.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/gltf/gltf_reader.h"
 #include "formats/mfdb/mfdb_file.h"
 #include "formats/mfdb/xxhash64.h"
+#include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
 #include "tests/fuzz/fuzz_targets.h"
 
@@ -69,6 +73,12 @@ std::string WithConsistentHeader(std::string_view bytes, const char (&magic)[9],
   return fixed;
 }
 
+// The fixture FBX's scene as the child encodes it: the valid answer the wire target patches.
+const std::string& EncodedFixtureScene() {
+  static const std::string bytes = EncodeSceneResult(ImportFile(MOCAPFILL_FIXTURES_DIR "/fbx/pivot_chain.fbx"));
+  return bytes;
+}
+
 }  // namespace
 
 int FuzzBvh(const uint8_t* data, size_t size) {
@@ -86,6 +96,45 @@ int FuzzGltf(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   const bool glb = size >= 4 && bytes.compare(0, 4, "glTF") == 0;
   (void)ReadGltf(bytes, GltfFolder() + (glb ? "/fuzz.glb" : "/fuzz.gltf"), ImportOptions{});
+  return 0;
+}
+
+int FuzzFbx(const uint8_t* data, size_t size) {
+  // A reader that hangs is stopped well inside libFuzzer's 10 s timeout; the scratch file
+  // lives in the glTF target's folder, removed at exit.
+  static const bool limited = setenv("MOCAPFILL_ASSIMP_TIMEOUT_S", "5", 1) == 0;
+  (void)limited;
+  const std::string path = GltfFolder() + "/fuzz.fbx";
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  const Result<Scene> scene = ImportFile(path);
+  // Inputs on which Assimp itself crashed (isolated, so no finding for libFuzzer) are kept
+  // when asked, to become regression inputs (tests/fuzz/regressions/fbx/).
+  const char* keep = std::getenv("MOCAPFILL_FUZZ_KEEP_ASSIMP_CRASHES");
+  if (keep != nullptr && !scene.ok() && scene.status().message().find("reader crashed") != std::string::npos) {
+    Xxh64 hash;
+    hash.Update(data, size);
+    std::ofstream(std::string(keep) + "/assimp-crash-" + std::to_string(hash.Digest()), std::ios::binary)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  return 0;
+}
+
+int FuzzWire(const uint8_t* data, size_t size) {
+  (void)DecodeSceneResult(AsText(data, size), "fuzz.fbx");
+  // Patches of a valid answer reach the scene's inner fields: each 4 input bytes are a
+  // position (2 bytes, modulo the length) and a value to XOR there.
+  std::string patched = EncodedFixtureScene();
+  if (patched.empty()) return 0;
+  for (size_t i = 0; i + 3 < size; i += 4) {
+    const size_t at = (static_cast<size_t>(data[i]) << 8 | data[i + 1]) % patched.size();
+    patched[at] = static_cast<char>(patched[at] ^ data[i + 2]);
+    if (data[i + 3] & 1) patched.resize(at);  // and cut there
+    if (patched.empty()) break;
+  }
+  (void)DecodeSceneResult(patched, "fuzz.fbx");
   return 0;
 }
 

@@ -60,6 +60,8 @@ TEST(FuzzSeeds, GltfFixtures) {
   EXPECT_GE(gltf + Replay(Target("gltf"), testing::FixtureFiles("", ".glb")), 10);
 }
 
+TEST(FuzzSeeds, FbxFixtures) { EXPECT_GE(Replay(Target("fbx"), testing::FixtureFiles("fbx", ".fbx")), 2); }
+
 TEST(FuzzSeeds, PipelineFixtures) {
   EXPECT_GE(Replay(Target("pipeline"), testing::FixtureFiles("pipelines", ".json")), 6);
 }

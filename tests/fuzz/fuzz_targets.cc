@@ -6,6 +6,7 @@ const std::vector<FuzzTarget>& AllFuzzTargets() {
   static const std::vector<FuzzTarget> targets = {
       {"bvh", FuzzBvh}, {"gltf", FuzzGltf},         {"mfdb", FuzzMfdb},
       {"pca", FuzzPca}, {"pipeline", FuzzPipeline}, {"maps", FuzzMaps},
+      {"fbx", FuzzFbx}, {"wire", FuzzWire},
   };
   return targets;
 }

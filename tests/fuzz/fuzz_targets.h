@@ -19,6 +19,8 @@ int FuzzMfdb(const uint8_t* data, size_t size);      // motion database file (Pa
 int FuzzPca(const uint8_t* data, size_t size);       // PCA model file (ParsePcaModel)
 int FuzzPipeline(const uint8_t* data, size_t size);  // pipeline JSON, parsed and validated as `run --dry-run` does
 int FuzzMaps(const uint8_t* data, size_t size);      // joint-name map (db build --map) and rig map (fill --map)
+int FuzzFbx(const uint8_t* data, size_t size);       // .fbx through ImportFile: Assimp in its child process
+int FuzzWire(const uint8_t* data, size_t size);      // the child's answer (DecodeSceneResult), raw and patched
 
 struct FuzzTarget {
   const char* name;  // also the folder of its regression inputs: tests/fuzz/regressions/<name>/

@@ -18,7 +18,7 @@ target_compile_definitions(fuzz_replay_tests PRIVATE
 
 if(MOCAPFILL_FUZZ)
   add_custom_target(fuzzers)
-  foreach(name bvh gltf mfdb pca pipeline maps)
+  foreach(name bvh gltf mfdb pca pipeline maps fbx wire)
     string(SUBSTRING ${name} 0 1 first)
     string(TOUPPER ${first} first)
     string(SUBSTRING ${name} 1 -1 rest)
