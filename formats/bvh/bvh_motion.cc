@@ -1,6 +1,7 @@
 #include "formats/bvh/bvh_motion.h"
 
 #include <algorithm>
+#include <cstring>
 #include <array>
 #include <charconv>
 #include <climits>
@@ -110,6 +111,19 @@ Status ExpectLabel(BvhLexer& lexer, std::string_view word, const char* label) {
                                                                   : BvhLexer::Quote(token)));
 }
 
+// Lines from `p` to `end`, counted no further than `cap` (so that only the text that many rows
+// take is read).
+size_t LinesUpTo(const char* p, const char* end, size_t cap) {
+  size_t lines = 1;
+  while (lines < cap && p < end) {
+    p = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p)));
+    if (p == nullptr) break;
+    ++p;
+    ++lines;
+  }
+  return std::min(lines, cap);
+}
+
 }  // namespace
 
 Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer) {
@@ -157,9 +171,11 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
     clip.rotations.clear();
     clip.translations.clear();
   }
-  // Reserve for the declared frames, but never more than the rest of the file can hold, so
-  // "Frames: 1000000000" cannot exhaust memory.
-  const size_t reserve_rows = std::min({static_cast<size_t>(header.declared_frames), max_rows, kMaxJointFrames / joints});
+  // Reserve for the rows the rest of the file holds (each ends its line; counting lines costs a
+  // small part of parsing them), never past the limit: "Frames: 1000000000" over ten rows
+  // reserves ten, and "Frames: 1" over a gigabyte of rows does not grow by doubling past it.
+  const size_t cap = std::min(max_rows, kMaxJointFrames / joints);
+  const size_t reserve_rows = LinesUpTo(lexer.cursor(), lexer.text_end(), cap);
   clip.rotations.reserve(reserve_rows * joints);
   clip.translations.reserve(reserve_rows * joints);
   PrefaultForWrite(clip.rotations.data(), clip.rotations.capacity() * sizeof(Eigen::Quaterniond));

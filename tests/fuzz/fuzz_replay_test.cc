@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/motion_io.h"
 #include "tests/fuzz/fuzz_targets.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
@@ -50,6 +51,24 @@ TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
   for (const FuzzTarget& target : AllFuzzTargets())
     total += Replay(target, FilesUnder(fs::path(MOCAPFILL_FUZZ_REGRESSIONS_DIR) / target.name));
   RecordProperty("inputs", total);
+}
+
+// Files on which Assimp itself aborts: read in its child process, each is an error naming the
+// file (the fbx target cannot tell, since the child's crash never reaches libFuzzer).
+TEST(FuzzRegressions, AssimpCrashesEndAsErrorsNamingTheFile) {
+  const std::vector<std::string> inputs = FilesUnder(fs::path(MOCAPFILL_FUZZ_REGRESSIONS_DIR) / "fbx");
+  ASSERT_GE(inputs.size(), 3u);
+  const std::string dir = testing::ScratchDir("FuzzRegressions.AssimpCrashes");
+  for (const std::string& input : inputs) {
+    const std::string path = dir + "/" + fs::path(input).filename().string() + ".fbx";
+    fs::copy_file(input, path, fs::copy_options::overwrite_existing);
+    const Result<Scene> scene = ImportFile(path);
+    ASSERT_FALSE(scene.ok()) << path;
+    EXPECT_EQ(scene.status().code(), ErrorCode::kInvalidData);
+    EXPECT_EQ(scene.status().message().rfind(path + ": the Assimp reader crashed on this file (signal", 0), 0u)
+        << scene.status().message();
+    EXPECT_EQ(scene.status().message().find("memory"), std::string::npos) << scene.status().message();
+  }
 }
 
 // Each target on the fixtures of its format, good and bad ones alike.
