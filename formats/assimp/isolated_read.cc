@@ -149,8 +149,8 @@ Result<Scene> ReadIsolated(const std::string& path, const IsolationLimits& limit
   rusage usage{};
   while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
   }
-  // An abort is put down to memory only when the child had used much of its limit (Assimp
-  // also aborts on damaged files, with little memory in use).
+  // A crash is put down to memory only when the child had used much of its limit (Assimp also
+  // aborts on damaged files, with little memory in use).
   const bool near_memory_limit = memory_limited && usage.ru_maxrss * 1024.0 > 0.5 * limits.memory_mb * 1048576.0;
   const std::string reader = path + ": the Assimp reader ";
   const std::string memory_limit = memory_limited ? " (limit " + std::to_string(limits.memory_mb) +
@@ -164,9 +164,9 @@ Result<Scene> ReadIsolated(const std::string& path, const IsolationLimits& limit
     if (sig == SIGKILL)
       return InvalidData(reader + "was killed (SIGKILL) while reading this file, most likely for want of memory");
     // Assimp's C++ runtime is not ours (the plug-in links the shared libstdc++), so an
-    // allocation failing inside it can end in abort() rather than in our new-handler.
-    const std::string maybe_memory =
-        sig == SIGABRT && near_memory_limit ? ", perhaps for want of memory" + memory_limit : std::string();
+    // allocation failing inside it can end in abort() rather than in our new-handler, and a
+    // stack that cannot grow ends in SIGSEGV.
+    const std::string maybe_memory = near_memory_limit ? ", perhaps for want of memory" + memory_limit : std::string();
     return InvalidData(reader + "crashed on this file (signal " + std::to_string(sig) + ", " + strsignal(sig) + ")" +
                        maybe_memory + "; the file is damaged or uses something Assimp cannot read");
   }
