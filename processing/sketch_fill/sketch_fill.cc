@@ -1,6 +1,7 @@
 #include "processing/sketch_fill/sketch_fill.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 #include "processing/core/kinematics.h"
@@ -150,11 +151,28 @@ Quaterniond KeyedRotationAt(const RotationKeys& keys, double time_s) {
   return keys.values[k - 1].slerp(u, keys.values[k]).normalized();
 }
 
-struct PositionTarget {
-  int joint = -1;
-  double time_s = 0.0;
-  Vector3d position_m = Vector3d::Zero();  // sketch world
-};
+// The limb that carries a position-keyed joint: thigh and shin for a foot, upper arm and
+// forearm for a hand, shin and foot for the toes; else the joint's parent and grandparent.
+TwoBoneChain ChainOf(const Skeleton& skeleton, const RigMapping& mapping, int joint) {
+  using B = HumanoidBone;
+  TwoBoneChain chain;
+  chain.end = joint;
+  const int bone = mapping.BoneOfJoint(joint);
+  const std::pair<B, std::array<B, 2>> limbs[] = {
+      {B::kLeftFoot, {B::kLeftUpperLeg, B::kLeftLowerLeg}},   {B::kRightFoot, {B::kRightUpperLeg, B::kRightLowerLeg}},
+      {B::kLeftHand, {B::kLeftUpperArm, B::kLeftLowerArm}},   {B::kRightHand, {B::kRightUpperArm, B::kRightLowerArm}},
+      {B::kLeftToes, {B::kLeftLowerLeg, B::kLeftFoot}},       {B::kRightToes, {B::kRightLowerLeg, B::kRightFoot}},
+  };
+  for (const auto& [end, pair] : limbs)
+    if (bone >= 0 && BoneAt(bone) == end && mapping.has(pair[0]) && mapping.has(pair[1])) {
+      chain.upper = mapping.joint(pair[0]);
+      chain.lower = mapping.joint(pair[1]);
+      return chain;
+    }
+  chain.lower = skeleton.parent(joint);
+  chain.upper = chain.lower == kNoParent ? kNoParent : skeleton.parent(chain.lower);
+  return chain;
+}
 
 // Translation keys of the listed joints become world-space position targets: where the keys
 // put the joint in the sketch, carried to the database's rig like the hips (canonical axes,
@@ -177,7 +195,7 @@ Result<std::vector<SketchPositionKey>> TakePositionKeys(const Skeleton& skeleton
       const int f = std::clamp(static_cast<int>(std::lround(moves.times_s[k] * clip.sample_rate_hz)), 0,
                                clip.num_frames - 1);
       ComputeWorldPose(skeleton, clip, f, pose);
-      targets.push_back({j, moves.times_s[k], pose.positions[j]});
+      targets.push_back({j, moves.times_s[k], pose.positions[j], ChainOf(skeleton, sketch_rig.mapping, j)});
       const Vector3d canonical = sketch_rig.rig.frame().conjugate() * pose.positions[j] / sketch_rig.rig.hip_height_m();
       const int db_frame = static_cast<int>(std::lround(moves.times_s[k] * db.rate_hz()));
       keys.push_back({db_frame, db_joint, db_rig.rig.frame() * canonical * db_rig.rig.hip_height_m()});
@@ -282,6 +300,24 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
   MotionClip out = SampleOutput(back, clip, CarriedJoints(sketch.skeleton, sketch_rig.mapping), times, result.uniform,
                                 result.output_rate_hz);
   PinKeys(clip, hips, out);
+  // The fill holds position keys on the database's rig; other proportions move them a little
+  // on the sketch's, so the limb is brought onto them here (unless its joints carry rotation
+  // keys, which come first).
+  std::vector<PositionTarget> reachable;
+  std::vector<int> held_by_fill;
+  for (const PositionTarget& t : targets) {
+    const int chain[3] = {t.chain.upper, t.chain.lower, t.chain.end};
+    const bool keyed = std::any_of(std::begin(chain), std::end(chain),
+                                   [&](int j) { return j < 0 || !RotationKeysOf(clip, j).times_s.empty(); });
+    if (!keyed) {
+      reachable.push_back(t);
+    } else if (std::find(held_by_fill.begin(), held_by_fill.end(), t.joint) == held_by_fill.end()) {
+      held_by_fill.push_back(t.joint);
+      result.warnings.push_back("position keys on '" + sketch.skeleton.name(t.joint) +
+                                "' are held by the fill alone: the limb above it has rotation keys");
+    }
+  }
+  PinPositionTargets(sketch.skeleton, reachable, out);
   out.MakeContinuous();
   out.KeyAllFrames();
   const double retarget_out_s = SecondsSince(stage);

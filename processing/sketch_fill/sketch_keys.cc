@@ -137,6 +137,43 @@ void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {
   }
 }
 
+void PinPositionTargets(const Skeleton& skeleton, const std::vector<PositionTarget>& targets, MotionClip& out) {
+  std::vector<int> joints;
+  for (const PositionTarget& t : targets)
+    if (std::find(joints.begin(), joints.end(), t.joint) == joints.end()) joints.push_back(t.joint);
+  WorldPose pose;
+  for (int joint : joints) {
+    std::vector<const PositionTarget*> mine;
+    for (const PositionTarget& t : targets)
+      if (t.joint == joint) mine.push_back(&t);
+    std::sort(mine.begin(), mine.end(), [](const PositionTarget* x, const PositionTarget* y) { return x->time_s < y->time_s; });
+    const TwoBoneChain chain = mine.front()->chain;
+    const int moved[3] = {chain.upper, chain.lower, chain.end};
+    // The solution at each target time, as offsets from what the fill gave there.
+    std::vector<double> times;
+    std::vector<TwoBoneSolution> solutions;
+    std::vector<std::vector<Vector3d>> offsets(3);
+    for (const PositionTarget* t : mine) {
+      const int f = NearestFrame(out, t->time_s);
+      ComputeWorldPose(skeleton, out, f, pose);
+      const TwoBoneSolution s = SolveTwoBoneIk(skeleton, pose, chain, t->position_m);
+      const Quaterniond solved[3] = {s.upper, s.lower, s.end};
+      for (int i = 0; i < 3; ++i) offsets[i].push_back(LogMap(solved[i] * out.rotation(f, moved[i]).conjugate()));
+      times.push_back(t->time_s);
+      solutions.push_back(s);
+    }
+    for (int f = 0; f < out.num_frames; ++f)
+      for (int i = 0; i < 3; ++i)
+        out.rotation(f, moved[i]) = (ExpMap(Interpolate(times, offsets[i], out.time_s(f))) * out.rotation(f, moved[i])).normalized();
+    for (size_t k = 0; k < times.size(); ++k) {  // the solutions themselves where targets sit on frames
+      const int f = NearestFrame(out, times[k]);
+      out.rotation(f, chain.upper) = solutions[k].upper;
+      out.rotation(f, chain.lower) = solutions[k].lower;
+      out.rotation(f, chain.end) = solutions[k].end;
+    }
+  }
+}
+
 std::vector<double> MaxFrameJumpsDeg(const MotionClip& clip) {
   std::vector<double> worst(clip.num_joints, 0.0);
   for (int f = 1; f < clip.num_frames; ++f)

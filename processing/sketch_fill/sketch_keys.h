@@ -12,6 +12,7 @@
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
 #include "processing/motion/key_fidelity.h"
+#include "processing/motion/two_bone_ik.h"
 
 namespace mocapfill {
 
@@ -38,6 +39,21 @@ int NearestFrame(const MotionClip& clip, double time_s);
 // between keys (held before the first and after the last), so that the output passes
 // exactly through each key and keeps its own detail in between.
 void PinKeys(const MotionClip& sketch, int hips, MotionClip& out);
+
+// A world position a joint must reach at a time (a --position-keys key, on the sketch's rig),
+// and the limb that moves it there.
+struct PositionTarget {
+  int joint = -1;
+  double time_s = 0.0;
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  TwoBoneChain chain;  // chain.end == joint
+};
+
+// Moves each target's joint onto its positions with two-bone IK (two_bone_ik.h) at the target
+// times, as a displacement map of the chain's rotations between those times (held before the
+// first and after the last), so that the limb passes exactly through each position and keeps
+// the fill's motion in between. `out`'s frame times contain every target time.
+void PinPositionTargets(const Skeleton& skeleton, const std::vector<PositionTarget>& targets, MotionClip& out);
 
 // Largest rotation change of any joint between consecutive frames, in degrees; and per joint.
 double MaxFrameJumpDeg(const MotionClip& clip);
