@@ -28,6 +28,7 @@ struct EvalArgs {
   std::string methods = "mean,nn,fragment,hierarchical";
   std::string folds, contents, save_sketches;
   bool json = false;
+  std::string feet = "free";
   FillOptions fill;
   FillFlagText text;
 };
@@ -130,6 +131,7 @@ int RunEval(EvalArgs& args) {
   options.sketch.key_every_frames = args.every;
   options.only_folds = SplitList(args.folds);
   options.only_contents = SplitList(args.contents);
+  options.plant_feet = args.feet == "plant";
   Status flags = ApplyFillFlagText(args.text, args.fill);
   for (const std::string& name : SplitList(args.methods)) {
     Result<FillMethod> method = ParseFillMethod(name);
@@ -193,6 +195,9 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--folds", args->folds, "Only these folds (comma-separated label values)");
   command->add_option("--contents", args->contents, "Only test clips with these contents (comma-separated)");
   command->add_flag("--json", args->json, "Print JSON (summary and per clip) instead of the table");
+  command->add_option("--feet", args->feet, "plant: hold feet that stand at two keys between them (as fill does)")
+      ->check(CLI::IsMember({"plant", "free"}))
+      ->capture_default_str();
   command->add_option("--save-sketches", args->save_sketches,
                       "Only write the selected clips' sketches (.sketch.glb, and .sketch.bvh at the key rate) to DIR");
   AddFillFlags(*command, args->fill, args->text);

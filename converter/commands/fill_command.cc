@@ -25,7 +25,7 @@ namespace {
 
 struct FillArgs {
   std::string input, output, report, map, method = "hierarchical", synthesize, keep, pca, rest = "auto";
-  std::string position_keys;
+  std::string position_keys, feet = "plant";
   std::vector<std::string> db;
   ImportOptions import;
   FillOptions fill;
@@ -66,6 +66,12 @@ nlohmann::ordered_json ReportJson(const SketchFillResult& result, const std::str
   out["key_error_max_deg"] = result.key_error_max_deg;
   out["root_key_error_max_m"] = result.translation_key_error_max_m;
   out["max_frame_jump_deg"] = result.max_frame_jump_deg;
+  nlohmann::ordered_json contacts = nlohmann::ordered_json::array();
+  for (const FootContact& c : result.feet.contacts)
+    contacts.push_back({{"foot", c.side}, {"from_s", c.start_s}, {"to_s", c.end_s},
+                        {"max_correction_m", c.max_correction_m}});
+  out["feet"] = {{"contacts", contacts}, {"frames_held", result.feet.frames_held},
+                 {"max_correction_m", result.feet.max_correction_m}};
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (const JointFillInfo& j : result.joints)
     joints.push_back({{"joint", j.name}, {"kind", j.kind}, {"keys", j.keys},
@@ -112,6 +118,9 @@ void PrintSummary(const SketchFillResult& result) {
                textured, synthesized, kept, r.sketch_fragments, r.seams);
   std::fprintf(stderr, "  keys: mean error %.4f deg, max %.4f deg (read back from the output, at the keys' own times)\n",
                result.key_error_mean_deg, result.key_error_max_deg);
+  if (!result.feet.contacts.empty())
+    std::fprintf(stderr, "  feet: %zu contacts held between keys, %d leg-frames, largest correction %.1f cm\n",
+                 result.feet.contacts.size(), result.feet.frames_held, 100.0 * result.feet.max_correction_m);
   std::fprintf(stderr, "  time:");
   for (const StageTime& s : r.stages) std::fprintf(stderr, " %s %.1f ms", s.stage.c_str(), 1000.0 * s.seconds);
   std::fprintf(stderr, "\n");
@@ -157,6 +166,7 @@ int RunFill(FillArgs& args) {
   options.keep = SplitList(args.keep);
   options.synthesize = SplitList(args.synthesize);
   options.position_keys = SplitList(args.position_keys);
+  options.plant_feet = args.feet == "plant";
   Result<Scene> scene = ImportFile(args.input, args.import);
   if (!scene.ok()) return Fail(scene.status(), Stage::kInput);
   if (scene->clips.size() > 1) scene->clips.resize(1);  // the first animation is the sketch
@@ -212,6 +222,11 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   command->add_option("--position-keys", args->position_keys,
                       "Joints whose translation keys are world-space position targets (comma-separated)");
+  command->add_option("--feet", args->feet,
+                      "plant: a foot standing low and still at two consecutive keys is held there in between "
+                      "(leg IK; keys stay exact); free: legs as filled")
+      ->check(CLI::IsMember({"plant", "free"}))
+      ->capture_default_str();
   command->add_option("--synthesize", args->synthesize, "Joints to synthesise even if keyed (comma-separated)");
   command->add_option("--keep", args->keep, "Only these joints are keyed; every other joint is synthesised");
   AddFillFlags(*command, args->fill, args->text);

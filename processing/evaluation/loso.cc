@@ -1,5 +1,8 @@
 #include "processing/evaluation/loso.h"
 
+#include <array>
+#include "processing/retargeting/rig_mapping.h"
+
 #include <algorithm>
 #include <chrono>
 #include <set>
@@ -53,6 +56,10 @@ Status ScoreFold(const std::vector<LabeledClip>& clips, const std::string& fold,
     for (const NamedMethod& method : options.methods) {
       const auto start = std::chrono::steady_clock::now();
       Result<FillResult> filled = engine.Fill(sketch, method.options);
+      if (filled.ok() && options.plant_feet) {
+        ASSIGN_OR_RETURN(const RigMapping mapping, MapHumanoid(db.skeleton(), {}));
+        PlantFeet(db.skeleton(), LegsToPlant(mapping, sketch, db.root_joint()), options.feet, filled->clip);
+      }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!filled.ok()) return filled.status().WithContext("clip '" + c.clip.name + "', method " + method.name);
       ASSIGN_OR_RETURN(FillMetrics metrics, ScoreFill(c.skeleton, c.clip, sketch, filled->clip, db.root_joint()));

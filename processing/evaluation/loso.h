@@ -15,6 +15,7 @@
 #include "processing/database/motion_database.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "processing/motion/foot_plant.h"
 #include "processing/synthesis/fill_options.h"
 
 namespace mocapfill {
@@ -39,6 +40,9 @@ struct EvaluationOptions {
   std::vector<std::string> only_folds;      // empty = every fold
   std::vector<std::string> only_contents;   // empty = every content is tested
   DatabaseOptions database;
+  // Plant the feet between keys after each fill (foot_plant.h), as `fill --feet plant` does.
+  bool plant_feet = false;
+  FootPlantOptions feet;
   // Called after every scored clip (may be empty): done, total.
   std::function<void(int, int)> on_clip_done;
 

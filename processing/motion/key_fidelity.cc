@@ -32,6 +32,11 @@ FrameBracket FindBracket(const MotionClip& clip, double time_s) {
   return {lo, hi, std::clamp((time_s - t0) / (t1 - t0), 0.0, 1.0)};
 }
 
+int NearestFrame(const MotionClip& clip, double time_s) {
+  const FrameBracket k = FindBracket(clip, time_s);
+  return k.u > 0.5 ? k.b : k.a;
+}
+
 RotationKeys RotationKeysOf(const MotionClip& clip, int joint) {
   const JointKeys& k = clip.keys[joint];
   if (k.has_exact_rotations() && k.rotation_times_s.size() == k.rotation_values.size())

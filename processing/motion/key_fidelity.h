@@ -24,6 +24,9 @@ struct FrameBracket {
 };
 FrameBracket FindBracket(const MotionClip& clip, double time_s);
 
+// The frame whose time is nearest `time_s` (uniform or explicit frame times).
+int NearestFrame(const MotionClip& clip, double time_s);
+
 // A joint's keys at the source's exact times: its recorded key times and values where the
 // importer kept them (JointKeys::rotation_times_s, ...), else its keyed frames at their frame
 // times with the frame values.

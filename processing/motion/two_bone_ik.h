@@ -31,9 +31,16 @@ struct TwoBoneSolution {
   double miss_m = 0.0;
 };
 
+// The axis the middle joint bends about, in the upper joint's frame, taken where `clip` bends
+// the limb most: a nearly straight leg shows no bend plane of its own, and a plane taken from
+// it could flip from one frame to the next (the knee would snap backwards).
+Eigen::Vector3d HingeOf(const Skeleton& skeleton, const MotionClip& clip, const TwoBoneChain& chain);
+
 // The rotations that put `chain.end` at `target` (world, metres), starting from `pose` (the
-// world pose of the frame being solved).
+// world pose of the frame being solved), bending about `hinge` (HingeOf; zero: the plane the
+// chain lies in at `pose`).
 TwoBoneSolution SolveTwoBoneIk(const Skeleton& skeleton, const WorldPose& pose, const TwoBoneChain& chain,
-                               const Eigen::Vector3d& target);
+                               const Eigen::Vector3d& target,
+                               const Eigen::Vector3d& hinge = Eigen::Vector3d::Zero());
 
 }  // namespace mocapfill

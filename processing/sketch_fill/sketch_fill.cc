@@ -318,6 +318,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
     }
   }
   PinPositionTargets(sketch.skeleton, reachable, out);
+  if (options.plant_feet) result.feet = PlantFeet(sketch.skeleton, LegsToPlant(sketch_rig.mapping, clip, hips), options.feet, out);
   out.MakeContinuous();
   out.KeyAllFrames();
   const double retarget_out_s = SecondsSince(stage);

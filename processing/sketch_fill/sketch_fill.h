@@ -14,6 +14,7 @@
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
 #include "processing/database/motion_database.h"
+#include "processing/motion/foot_plant.h"
 #include "processing/retargeting/rest_pose.h"
 #include "processing/synthesis/fill_options.h"
 
@@ -30,6 +31,9 @@ struct SketchFillOptions {
   std::vector<std::string> synthesize;  // joints synthesised even when keyed
   // Joints whose translation keys are world-space position targets (hybrid method only).
   std::vector<std::string> position_keys;
+  // Hold feet that stand at two consecutive keys between them (foot_plant.h): `--feet plant`.
+  bool plant_feet = true;
+  FootPlantOptions feet;
 };
 
 // How the sketch's rig was read, for reports.
@@ -66,6 +70,7 @@ struct SketchFillResult {
   double translation_key_error_max_m = 0.0;
   double position_key_error_max_m = 0.0;  // --position-keys targets against the output's joints
   double max_frame_jump_deg = 0.0;  // largest rotation change of any joint between output frames
+  FootPlantReport feet;             // the contacts held (empty with plant_feet off)
   std::vector<std::string> warnings;
 };
 

@@ -104,11 +104,6 @@ std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& 
   return kept;
 }
 
-int NearestFrame(const MotionClip& clip, double time_s) {
-  const FrameBracket k = FindBracket(clip, time_s);
-  return k.u > 0.5 ? k.b : k.a;
-}
-
 void PinKeys(const MotionClip& sketch, int hips, MotionClip& out) {
   for (int j = 0; j < sketch.num_joints; ++j) {
     const RotationKeys keys = RotationKeysOf(sketch, j);
@@ -149,6 +144,7 @@ void PinPositionTargets(const Skeleton& skeleton, const std::vector<PositionTarg
     std::sort(mine.begin(), mine.end(), [](const PositionTarget* x, const PositionTarget* y) { return x->time_s < y->time_s; });
     const TwoBoneChain chain = mine.front()->chain;
     const int moved[3] = {chain.upper, chain.lower, chain.end};
+    const Vector3d hinge = HingeOf(skeleton, out, chain);
     // The solution at each target time, as offsets from what the fill gave there.
     std::vector<double> times;
     std::vector<TwoBoneSolution> solutions;
@@ -156,7 +152,7 @@ void PinPositionTargets(const Skeleton& skeleton, const std::vector<PositionTarg
     for (const PositionTarget* t : mine) {
       const int f = NearestFrame(out, t->time_s);
       ComputeWorldPose(skeleton, out, f, pose);
-      const TwoBoneSolution s = SolveTwoBoneIk(skeleton, pose, chain, t->position_m);
+      const TwoBoneSolution s = SolveTwoBoneIk(skeleton, pose, chain, t->position_m, hinge);
       const Quaterniond solved[3] = {s.upper, s.lower, s.end};
       for (int i = 0; i < 3; ++i) offsets[i].push_back(LogMap(solved[i] * out.rotation(f, moved[i]).conjugate()));
       times.push_back(t->time_s);

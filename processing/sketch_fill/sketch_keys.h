@@ -31,9 +31,6 @@ Status CheckTranslationKeys(const Skeleton& skeleton, const MotionClip& clip, in
 // time that is not on that grid (then `uniform` is false).
 std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& uniform);
 
-// The frame whose time is nearest `time_s` (uniform or explicit frame times).
-int NearestFrame(const MotionClip& clip, double time_s);
-
 // Moves every keyed joint of `out` (same skeleton as `sketch`, frame times containing every
 // key time) onto its keys with a displacement map: the offset at each key, interpolated
 // between keys (held before the first and after the last), so that the output passes

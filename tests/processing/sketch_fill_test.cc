@@ -381,3 +381,48 @@ TEST(SketchFill, EveryRigKeepsKeysWithoutFlips) {
 
 }  // namespace
 }  // namespace mocapfill
+
+namespace mocapfill {
+namespace {
+
+// --feet plant (the default): a foot keyed standing at two consecutive keys stays on the line
+// between its two keyed positions at every frame in between; keys stay exact; the legs do not
+// pop (no larger frame-to-frame turn than the free fill's plus 5 degrees).
+TEST(SketchFill, FeetPlantedBetweenKeys) {
+  Result<Scene> sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  ASSERT_TRUE(sketch.ok());
+  SketchFillOptions free_options;
+  free_options.plant_feet = false;
+  Result<SketchFillResult> free_fill = FillSketch(*sketch, DefaultDb(), free_options);
+  Result<SketchFillResult> planted = FillSketch(*sketch, DefaultDb(), {});
+  ASSERT_TRUE(free_fill.ok() && planted.ok());
+  EXPECT_TRUE(free_fill->feet.contacts.empty());
+  ASSERT_GE(planted->feet.contacts.size(), 10u);
+  EXPECT_LT(planted->key_error_max_deg, kKeyToleranceDeg);
+  const Skeleton& s = planted->scene.skeleton;
+  const MotionClip& out = planted->scene.clips[0];
+  WorldPose pose, start, end;
+  double worst_off_line = 0.0, free_off_line = 0.0;
+  for (const FootContact& c : planted->feet.contacts) {
+    const int foot = *s.Find(c.side == "left" ? "Foot_L" : "Foot_R");
+    const int a = NearestFrame(out, c.start_s), b = NearestFrame(out, c.end_s);
+    ComputeWorldPose(s, out, a, start);
+    ComputeWorldPose(s, out, b, end);
+    for (int f = a + 1; f < b; ++f) {
+      const double u = (out.time_s(f) - out.time_s(a)) / (out.time_s(b) - out.time_s(a));
+      const Eigen::Vector3d line = start.positions[foot] + u * (end.positions[foot] - start.positions[foot]);
+      ComputeWorldPose(s, out, f, pose);
+      worst_off_line = std::max(worst_off_line, (pose.positions[foot] - line).norm());
+      ComputeWorldPose(s, free_fill->scene.clips[0], f, pose);
+      free_off_line = std::max(free_off_line, (pose.positions[foot] - line).norm());
+    }
+  }
+  std::printf("planted feet: %zu contacts, %d leg-frames; off the line: %.2e m planted, %.3f m free\n",
+              planted->feet.contacts.size(), planted->feet.frames_held, worst_off_line, free_off_line);
+  EXPECT_LT(worst_off_line, 1e-6);
+  EXPECT_GT(free_off_line, 0.01);  // the free fill did slide: the test can fail
+  EXPECT_LT(planted->max_frame_jump_deg, free_fill->max_frame_jump_deg + 5.0);
+}
+
+}  // namespace
+}  // namespace mocapfill

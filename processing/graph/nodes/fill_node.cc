@@ -71,6 +71,7 @@ Result<std::unique_ptr<Node>> CreateFill(const NodeOptions& o) {
   sketch_options.keep = o.StringList("keep");
   sketch_options.synthesize = o.StringList("synthesize");
   sketch_options.position_keys = o.StringList("position_keys");
+  sketch_options.plant_feet = o.Bool("plant_feet");
   return std::unique_ptr<Node>(new FillNode(std::move(sketch_options)));
 }
 
@@ -103,6 +104,7 @@ NodeTypeSpec FillNodeSpec() {
       ListOption("synthesize", OptionType::kStringList, "joints synthesised even when keyed"),
       ListOption("position_keys", OptionType::kStringList,
                  "joints whose translation keys are world-space position targets (hybrid method)"),
+      BoolOption("plant_feet", true, "hold a foot standing at two consecutive keys between them (leg IK)"),
   };
   spec.create = CreateFill;
   return spec;
