@@ -210,8 +210,94 @@ def smpl():
     write_bvh(os.path.join(OUT, "smpl_body.bvh"), joints, root, {})
 
 
+# --- Unreal Engine naming (root/pelvis/spine_01/thigh_l/calf_l/ball_l ...), on a CC0 character:
+# Quaternius "Universal Base Characters", Superhero_Male.glb as kept in GitHub
+# Dallolz/moorfall-assets, characters/Superhero_Male.glb (added in commit
+# 43824dae24b04fea6254b96e9edb12157cfcde11; the repository's LICENSE.md: CC0 1.0, models by
+# Quaternius). Node transforms copied from the file's glTF JSON (metres; rotations x, y, z, w;
+# the root node turns Blender's Z up into glTF's Y up). The rest pose is the bind pose (every
+# joint's world matrix times its inverse bind matrix is the identity within 5e-7). Body bones
+# only: fingers, the *_leaf end bones and the node scales (1 within 2e-6) are left out.
+UE_NODES = [  # name, parent, translation, rotation (x, y, z, w)
+    ("root", None, (0.0, 0.0, 0.0), (-0.7071067690849304, 0.0, 0.0, 0.7071067690849304)),
+    ("pelvis", "root", (0.0, 0.042999982833862305, 0.9491000175476074), (0.8005710244178772, 0.0, 0.0, 0.5992379188537598)),
+    ("spine_01", "pelvis", (0.0, 0.1280922144651413, -3.259629011154175e-08), (-0.09185619652271271, 0.0, 0.0, 0.9957723021507263)),
+    ("spine_02", "spine_01", (0.0, 0.10634974390268326, -1.3969838619232178e-09), (-0.03958535194396973, 0.0, 0.0, 0.9992161989212036)),
+    ("spine_03", "spine_02", (0.0, 0.1331336796283722, 0.0), (-0.12418898940086365, 0.0, 0.0, 0.9922585487365723)),
+    ("neck_01", "spine_03", (0.0, 0.21509313583374023, 1.862645149230957e-08), (0.25725916028022766, 0.0, 0.0, 0.9663424491882324)),
+    ("Head", "neck_01", (0.0, 0.08285234868526459, 9.313225746154785e-09), (-0.13207007944583893, 0.0, 0.0, 0.991240382194519)),
+    ("clavicle_l", "spine_03", (0.03139999881386757, 0.1737176477909088, 0.06732845306396484),
+     (-0.5287374258041382, -0.32910192012786865, -0.41380804777145386, 0.663996696472168)),
+    ("upperarm_l", "clavicle_l", (-0.009135720320045948, 0.20573900640010834, -0.03967121243476868),
+     (0.149803027510643, 0.6911307573318481, -0.14938844740390778, 0.6910719275474548)),
+    ("lowerarm_l", "upperarm_l", (3.7845666156499647e-08, 0.251115083694458, -5.1513779908418655e-09),
+     (0.030732227489352226, 4.16175062127877e-05, -1.2497959005486337e-06, 0.9995276927947998)),
+    ("hand_l", "lowerarm_l", (-1.5123794128157897e-07, 0.243594229221344, 2.6994939616997726e-09),
+     (-0.015601660124957561, -4.1717584053913015e-07, -9.051257521264233e-09, 0.9998782873153687)),
+    ("clavicle_r", "spine_03", (-0.03139999881386757, 0.1737176477909088, 0.06732845306396484),
+     (-0.5287374258041382, 0.32910192012786865, 0.41380804777145386, 0.663996696472168)),
+    ("upperarm_r", "clavicle_r", (0.009135720320045948, 0.20573900640010834, -0.03967121243476868),
+     (0.1498030126094818, -0.6911307573318481, 0.14938844740390778, 0.6910719275474548)),
+    ("lowerarm_r", "upperarm_r", (-3.0872001843818e-08, 0.251115083694458, -2.86672729998827e-09),
+     (0.030732227489352226, -4.1677081753732637e-05, 1.251685375791567e-06, 0.9995276927947998)),
+    ("hand_r", "lowerarm_r", (1.5123667651550932e-07, 0.2435941994190216, 2.032038537436165e-09),
+     (-0.015601660124957561, 4.7677681891400425e-07, 8.121838313002172e-09, 0.9998782873153687)),
+    ("thigh_l", "pelvis", (0.11430513858795166, 0.023176943883299828, 0.0004878304898738861), (0.9898310303688049, 0.0, 0.0, 0.14224845170974731)),
+    ("calf_l", "thigh_l", (-7.450580596923828e-09, 0.4288000166416168, 3.1723175197839737e-09), (0.05598893761634827, 0.0, 0.0, 0.998431384563446)),
+    ("foot_l", "calf_l", (0.0, 0.4587883949279785, 5.587935447692871e-09),
+     (-0.5721680521965027, 1.9553584706955007e-07, -1.3641555085541768e-07, 0.8201364278793335)),
+    ("ball_l", "foot_l", (-4.181756274590498e-09, 0.15907371044158936, -7.893650177948075e-09),
+     (6.497470650401738e-08, 0.9731196165084839, -0.23030038177967072, 1.894733969720619e-07)),
+    ("thigh_r", "pelvis", (-0.11430513858795166, 0.023176943883299828, 0.0004878304898738861), (0.9898310303688049, 0.0, 0.0, 0.14224845170974731)),
+    ("calf_r", "thigh_r", (7.450580596923828e-09, 0.4288000166416168, 3.1723175197839737e-09), (0.05598893761634827, 0.0, 0.0, 0.998431384563446)),
+    ("foot_r", "calf_r", (0.0, 0.4587883949279785, 5.587935447692871e-09),
+     (-0.5721680521965027, -1.9553584706955007e-07, 1.3641555085541768e-07, 0.8201364278793335)),
+    ("ball_r", "foot_r", (4.181756274590498e-09, 0.15907371044158936, -7.893650177948075e-09),
+     (6.497470650401738e-08, -0.9731196165084839, 0.23030038177967072, 1.894733969720619e-07)),
+]
+
+
+def quat_mul(a, b):
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (aw * bx + ax * bw + ay * bz - az * by, aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw, aw * bw - ax * bx - ay * by - az * bz)
+
+
+def quat_rotate(q, v):
+    x, y, z, w = quat_mul(quat_mul(q, (v[0], v[1], v[2], 0.0)), (-q[0], -q[1], -q[2], q[3]))
+    return (x, y, z)
+
+
+def unreal():
+    world = {}
+    for name, parent, t, r in UE_NODES:
+        if parent is None:
+            world[name] = ((0.0, 0.0, 0.0), r)
+            continue
+        pp, pr = world[parent]
+        moved = quat_rotate(pr, t)
+        world[name] = (tuple(a + b for a, b in zip(pp, moved)), quat_mul(pr, r))
+    joints = []
+    order = []
+    def visit(name):
+        order.append(name)
+        for child, parent, _, _ in UE_NODES:
+            if parent == name:
+                visit(child)
+    visit("root")
+    parents = {name: parent for name, parent, _, _ in UE_NODES}
+    for name in order:
+        parent = parents[name]
+        off = (0.0, 0.0, 0.0) if parent is None else tuple(
+            100 * (a - b) for a, b in zip(world[name][0], world[parent][0]))
+        joints.append((name, parent, off))
+    write_bvh(os.path.join(OUT, "unreal_quaternius.bvh"), joints, (0.0, 0.0, 0.0), {})
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     mixamo()
     rigify()
     smpl()
+    unreal()

@@ -128,6 +128,20 @@ TEST(RigMappingFixtures, MixamoRigifySmpl) {
   }
 }
 
+// The Unreal naming on a real character (Quaternius, CC0; fixtures/README.md).
+TEST(RigMappingFixtures, UnrealNamedCharacter) {
+  const Scene s = Load(testing::FixturePath("rigs/unreal_quaternius.bvh"));
+  const RigMapping m = MapScene(s);
+  EXPECT_EQ(m.family, "unreal");
+  ExpectBones(s, m, {{B::kHips, "pelvis"}, {B::kSpine, "spine_01"}, {B::kChest, "spine_02"}, {B::kUpperChest, "spine_03"},
+                     {B::kNeck, "neck_01"}, {B::kHead, "Head"}, {B::kLeftShoulder, "clavicle_l"},
+                     {B::kLeftUpperArm, "upperarm_l"}, {B::kLeftLowerArm, "lowerarm_l"}, {B::kLeftHand, "hand_l"},
+                     {B::kRightHand, "hand_r"}, {B::kLeftUpperLeg, "thigh_l"}, {B::kLeftLowerLeg, "calf_l"},
+                     {B::kLeftFoot, "foot_l"}, {B::kLeftToes, "ball_l"}, {B::kRightToes, "ball_r"}});
+  EXPECT_TRUE(m.warnings.empty());
+  EXPECT_EQ(UnmappedJointReason(s.skeleton, m, *s.skeleton.Find("root")), "root above the hips");
+}
+
 TEST(RigMappingCorpus, RealRigs) {
   MOCAPFILL_REQUIRE_CORPUS();
   const std::vector<std::string> bandai = testing::CorpusFiles("bandai-namco-1/data", ".bvh");
@@ -397,7 +411,7 @@ void ExpectPoseFindsLimbs(const std::string& path) {
 
 TEST(RigMappingByPose, NamesWithoutSidesFixtures) {
   for (const char* f : {"bvh/bandai_walk_normal_001_short.bvh", "bvh/cmu_01_01_short.bvh", "bvh/boxing_toes_short.bvh",
-                        "rigs/mixamo_prefixed.bvh", "rigs/smpl_body.bvh"})
+                        "rigs/mixamo_prefixed.bvh", "rigs/smpl_body.bvh", "rigs/unreal_quaternius.bvh"})
     ExpectPoseFindsLimbs(testing::FixturePath(f));
 }
 

@@ -355,7 +355,7 @@ std::vector<std::string> LegJoints(const Scene& scene) {
 TEST(SketchFill, EveryRigKeepsKeysWithoutFlips) {
   std::vector<std::string> files = {"bvh/bandai_walk_normal_001_short.bvh", "bvh/cmu_01_01_short.bvh",
                                     "bvh/boxing_toes_short.bvh", "rigs/mixamo_prefixed.bvh", "rigs/rigify_def.bvh",
-                                    "rigs/smpl_body.bvh"};
+                                    "rigs/smpl_body.bvh", "rigs/unreal_quaternius.bvh"};
   for (std::string& f : files) f = testing::FixturePath(f);
   if (!testing::DataDir().empty())
     for (const char* f : {"assimp/Boxing_Toes.bvh", "geno/Geno_bind.bvh", "geno/Geno_stance.bvh", "cmu/01_03.bvh"})
