@@ -29,7 +29,8 @@ std::vector<Eigen::Quaterniond> Samples() {
   std::uniform_real_distribution<double> scale(0.5, 2.0);
   std::vector<Eigen::Quaterniond> q;
   for (int n = 0; n < 200000; ++n) {
-    Eigen::Quaterniond r(normal(rng), normal(rng), normal(rng), normal(rng));
+    Eigen::Quaterniond r;
+    for (int c = 0; c < 4; ++c) r.coeffs()[c] = normal(rng);  // in order: argument order is the compiler's
     if (n % 3 == 0) r.coeffs() *= scale(rng);  // not unit: fills and imports may give these
     if (n % 5 == 1) r.normalize();              // unit to an ulp or two, as composed rotations are
     if (n % 35 == 11) r.coeffs() *= n % 2 != 0 ? 1.0 + 1e-13 : 1.0 + 1e-11;  // just inside, just outside the tolerance
