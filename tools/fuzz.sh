@@ -30,15 +30,18 @@ if ! grep -q '^MOCAPFILL_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
 fi
 cmake --build "$build" -j "$(nproc)" --target fuzzers mocapfill_full
 
-# Seeds: the fixtures of each format; a database and a PCA model built from a fixture clip;
-# a few maps. Files over 64 KiB are left out (libFuzzer mutates best around small inputs).
+# Seeds: the fixtures of each format and, when ../shared/data is there, its files of those
+# formats; a database and a PCA model built from a fixture clip; a few maps. Files over 64 KiB
+# are left out (libFuzzer mutates best around small inputs).
 seeds=$build/fuzz-seeds
 rm -rf "$seeds"
 for t in bvh gltf mfdb pca pipeline maps fbx wire; do mkdir -p "$seeds/$t"; done
-copy_small() {  # copy_small <target> <find name patterns...>
-  local target=$1
+shared_data=$root/../shared/data
+copy_small() {  # copy_small <target> <find name patterns...>   (pipelines: the fixtures' only)
+  local target=$1 from=("$root/fixtures")
   shift
-  find "$root/fixtures" -type f \( "$@" \) -size -64k -print0 | while IFS= read -r -d '' f; do
+  [ -d "$shared_data" ] && [ "$target" != pipeline ] && from+=("$shared_data")
+  find "${from[@]}" -type f \( "$@" \) -size -64k -print0 | while IFS= read -r -d '' f; do
     cp "$f" "$seeds/$target/$(basename "$(dirname "$f")")_$(basename "$f")"
   done
 }
