@@ -425,10 +425,11 @@ MotionClip RetargetClip(const HumanoidRig& from, const MotionClip& clip, const H
   return out;
 }
 
-bool SameRig(const Skeleton& a, const Skeleton& b) {
+bool SameRig(const Skeleton& a, const Skeleton& b, const std::vector<std::uint8_t>& translating) {
   if (a.num_joints() != b.num_joints()) return false;
   for (int j = 0; j < a.num_joints(); ++j) {
     if (a.name(j) != b.name(j) || a.parent(j) != b.parent(j)) return false;
+    if (j < static_cast<int>(translating.size()) && translating[j]) continue;
     const Vector3d& ta = a.joint(j).rest_translation;
     const Vector3d& tb = b.joint(j).rest_translation;
     const bool za = ta.norm() < kMinSegmentM, zb = tb.norm() < kMinSegmentM;

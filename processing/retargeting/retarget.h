@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "processing/core/motion_clip.h"
@@ -27,6 +28,15 @@ class HumanoidRig {
   // Errors (kInvalidData): the mapping lacks the hips or both upper legs; the rest pose does
   // not fit the skeleton; the rest pose shows no left-right extent (sides cannot be told).
   static Result<HumanoidRig> Make(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& rest);
+
+  // This rig's geometry (frame, T-pose, hip height, mapping, rest) on `skeleton`, another
+  // skeleton of the same rig (SameRig): retargeting between the two copies local rotations
+  // exactly, whatever end sites or bone lengths either skeleton was read with.
+  HumanoidRig OnSkeleton(const Skeleton& skeleton) const {
+    HumanoidRig rig = *this;
+    rig.skeleton_ = skeleton;
+    return rig;
+  }
 
   const Skeleton& skeleton() const { return skeleton_; }
   const RigMapping& mapping() const { return mapping_; }
@@ -82,8 +92,11 @@ MotionClip FromCanonical(const HumanoidRig& rig, const CanonicalMotion& motion, 
 MotionClip RetargetClip(const HumanoidRig& from, const MotionClip& clip, const HumanoidRig& to);
 
 // True when two skeletons are one rig: the same joint names and parents, and rest offsets
-// pointing the same way (lengths may differ). Such rigs should share one rest pose, so that
-// retargeting between them copies local rotations exactly.
-bool SameRig(const Skeleton& a, const Skeleton& b);
+// pointing the same way (lengths may differ), except those of `translating` joints (by
+// index; a motion's joints whose translation is animated): their offsets hold no structure
+// (the Bandai-Namco takes write the hips' first position there, up to 4.5 m from the root).
+// Such rigs should share one rest pose, so that retargeting between them copies local
+// rotations exactly.
+bool SameRig(const Skeleton& a, const Skeleton& b, const std::vector<std::uint8_t>& translating = {});
 
 }  // namespace mocapfill

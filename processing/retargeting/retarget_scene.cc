@@ -26,7 +26,8 @@ Result<Scene> RetargetScene(const Scene& motion, const Scene& character, const R
   if (!from.ok()) return from.status().WithContext("motion rig");
   Scene out = character;
   out.clips.clear();
-  if (SameRig(motion.skeleton, character.skeleton) && character_rig.rest == RestSource::kAuto) {
+  if (SameRig(motion.skeleton, character.skeleton, motion.clips.front().translation_animated) &&
+      character_rig.rest == RestSource::kAuto) {
     for (const MotionClip& clip : motion.clips) out.clips.push_back(clip);
     return out;
   }

@@ -65,10 +65,17 @@ Result<PreparedRig> PrepareSketchRig(const Scene& scene, const SketchFillOptions
                                      const PreparedRig& db_rig, RigSummary& summary) {
   const Skeleton& s = scene.skeleton;
   const RigOptions rig_options{CanonicalOverrides(options.map, db.skeleton(), db_rig.mapping), options.rest};
-  summary.same_as_database = SameRig(s, db.skeleton()) && options.rest == RestSource::kAuto;
+  const std::vector<std::uint8_t> none;
+  const std::vector<std::uint8_t>& translating = scene.clips.empty() ? none : scene.clips.front().translation_animated;
+  summary.same_as_database = SameRig(s, db.skeleton(), translating) && options.rest == RestSource::kAuto;
   PreparedRig prepared;
-  if (summary.same_as_database) {
-    // One rig: share the database's rest so that retargeting copies local rotations exactly.
+  if (summary.same_as_database && rig_options.map.empty()) {
+    // One rig: the database's own rig geometry, so that retargeting copies local rotations
+    // exactly (a rig made anew from the sketch's skeleton aims its hands and head by end
+    // sites the database's skeleton may lack: 35 degrees apart on the Bandai-Namco hands).
+    prepared = PreparedRig{db_rig.mapping, db_rig.rig.OnSkeleton(s)};
+  } else if (summary.same_as_database) {
+    // One rig with overrides: share the database's rest so that local rotations carry over.
     RigMapOptions map_options;
     map_options.overrides = rig_options.map;
     ASSIGN_OR_RETURN(RigMapping mapping, MapHumanoid(s, ZeroPose(s).WorldPositions(s), map_options));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "processing/core/rotation.h"
 
@@ -13,9 +14,12 @@ namespace {
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-// Key times closer than this to a frame of the output grid are on it (glTF stores times
-// as float32: 1e-6 s is far above their rounding at animation lengths).
-constexpr double kOnGridS = 1e-6;
+// Key times this close to a frame of the output grid are on it, and two sample times this
+// close are one: glTF stores times as float32, whose spacing grows with the time (about
+// 4e-6 s at 33 s), so a fixed 1e-6 s split a 30 Hz key read from a glb from its own frame.
+double OnGridS(double time_s) {
+  return std::max(1e-6, 4.0 * std::numeric_limits<float>::epsilon() * std::abs(time_s));
+}
 
 bool Listed(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
@@ -91,7 +95,7 @@ std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& 
   uniform = true;
   for (double t : keys) {
     const double on_grid = std::round(t * rate_hz) / rate_hz;
-    if (std::abs(t - on_grid) <= kOnGridS) continue;
+    if (std::abs(t - on_grid) <= OnGridS(t)) continue;
     times.push_back(t);
     uniform = false;
   }
@@ -99,7 +103,7 @@ std::vector<double> OutputTimes(const MotionClip& sketch, double rate_hz, bool& 
   // Grid frames that fall next to an off-grid key give way to it: the key time is the sample.
   std::vector<double> kept;
   for (double t : times)
-    if (kept.empty() || t - kept.back() > kOnGridS) kept.push_back(t);
+    if (kept.empty() || t - kept.back() > OnGridS(t)) kept.push_back(t);
   if (!uniform && kept.back() < end) kept.push_back(end);
   return kept;
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 
+#include "formats/mfdb/mfdb_file.h"
 #include "formats/motion_io.h"
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
@@ -66,6 +67,65 @@ TEST(SketchFill, ShippedSketchOnTheDatabaseRig) {
   int synthesized = 0;
   for (const JointFillInfo& j : r->joints) synthesized += j.kind == "synthesized";
   EXPECT_GE(synthesized, 10);
+}
+
+// A Bandai-Namco take whose header gives the hips another OFFSET than the database's first
+// take, with end sites that a database read from a .mfdb (as `fill` reads its embedded one)
+// lacks, is still the database's rig, so the fill copies its rotations exactly. The clip
+// is part of the default database: its legs find their own take, and the synthesised hands
+// and head come back as captured (a rig made anew from the BVH aimed the hands by its end
+// sites, 35 degrees off the database's, and took the first frame as its rest).
+TEST(SketchFill, DatabaseRigReadFromBvhIsTheDatabaseRig) {
+  const std::string stored = testing::ScratchDir("sketch_db_rig") + "/default.mfdb";
+  ASSERT_TRUE(WriteMfdb(DefaultDb(), stored).ok());
+  Result<MotionDatabase> db = ReadMfdb(stored);
+  ASSERT_TRUE(db.ok()) << db.status().message();
+  Result<Scene> truth = ImportFile(testing::FixturePath("bvh/bandai_walk_normal_001_short.bvh"));
+  ASSERT_TRUE(truth.ok()) << truth.status().message();
+  // The header of the "tired" takes, whose hips OFFSET is their first position, 4.5 m from
+  // the root (the database keeps the first take's, 0 93.92 -3 cm): the hips translate, so
+  // their offset tells nothing of the rig.
+  truth->skeleton.mutable_joint(*truth->skeleton.Find("Hips")).rest_translation = {0.00847027, 0.93984, -4.52225};
+  SketchFillOptions options;
+  options.keep = kBandaiLegs;
+  Result<SketchFillResult> r = FillSketch(*truth, *db, options);
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  EXPECT_TRUE(r->rig.same_as_database);
+  const MotionClip& out = r->scene.clips[0];
+  double worst = 0.0, sum = 0.0;
+  int count = 0;
+  for (const char* name : {"Hand_L", "Hand_R", "Head"}) {
+    const int j = *truth->skeleton.Find(name);
+    for (int f = 0; f < out.num_frames; ++f) {
+      const double e = GeodesicAngle(out.rotation(f, j), SampleRotationAt(truth->clips[0], j, out.time_s(f))) * kDegPerRad;
+      worst = std::max(worst, e);
+      sum += e;
+      ++count;
+    }
+  }
+  std::printf("synthesised hands and head against the capture: mean %.2f deg, worst %.2f deg\n", sum / count, worst);
+  EXPECT_LT(sum / count, 5.0);
+  EXPECT_LT(r->key_error_max_deg, kKeyToleranceDeg);
+}
+
+// Key times read from a glb are float32, whose spacing at 40 s (about 4e-6 s) exceeds a fixed
+// 1e-6 s grid tolerance: such keys still lie on the sketch's 30 Hz grid, and the output is
+// that uniform grid (once, two samples equal in float32 made the writer refuse the file).
+TEST(SketchFill, LongSketchKeysStayOnTheirGrid) {
+  Result<Scene> source = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  ASSERT_TRUE(source.ok());
+  std::vector<double> times;
+  for (int k = 0; k * 8 <= 1200; ++k) times.push_back(static_cast<float>(k * 8 / 30.0));  // 40 s, as float32
+  const std::string path = testing::ScratchDir("sketch_long") + "/sketch.gltf";
+  ASSERT_TRUE(testing::WriteSparseSketch(source->skeleton, source->clips[0], kBandaiLegs, times, path));
+  Result<SketchFillResult> r = FillFile(path);
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  EXPECT_TRUE(r->uniform);
+  EXPECT_DOUBLE_EQ(r->output_rate_hz, 30.0);
+  EXPECT_EQ(r->scene.clips[0].num_frames, 1201);
+  EXPECT_LT(r->key_error_max_deg, kKeyToleranceDeg);
+  const std::string out = testing::ScratchDir("sketch_long") + "/filled.glb";
+  EXPECT_TRUE(ExportFile(r->scene, out).ok());
 }
 
 class SketchRates : public ::testing::TestWithParam<double> {};

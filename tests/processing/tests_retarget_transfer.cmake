@@ -13,7 +13,7 @@ mocapfill_add_test(sketch_fill_tests
   CORPUS [=[^SketchFill\.(CmuCorpusSketchHasNoFlips|PositionKeysHoldTheFeetOnGeno|GenoSketchScoresLikeTheBandaiRig)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/../support/sparse_sketch.cc
-  LIBS mocapfill_test_default_db mocapfill_test_gltf mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_gltf mocapfill_test_tinygltf
+  LIBS mocapfill_test_default_db mocapfill_test_gltf mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_mfdb mocapfill_gltf mocapfill_test_tinygltf
        mocapfill_test_bone_directions)
 
 # Two-bone IK (processing/motion/two_bone_ik.h), which holds position keys on any rig.
