@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
 
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
@@ -146,6 +147,36 @@ std::vector<JointFillInfo> SketchJoints(const Skeleton& s, const RigMapping& ske
     joints.push_back(info);
   }
   return joints;
+}
+
+// Where the database does not hold the motion: the time range, how far off, which joints
+// are a guess and what they were blended towards.
+std::string CoverageWarning(const PoorlyCoveredStretch& stretch, const CoverageReport& coverage, double rate_hz,
+                            const std::vector<JointFillInfo>& joints) {
+  std::vector<std::string> synthesized;
+  for (const JointFillInfo& j : joints)
+    if (j.kind == "synthesized") synthesized.push_back(j.name);
+  std::string names;
+  for (size_t i = 0; i < synthesized.size() && i < 6; ++i) names += (i ? ", " : "") + synthesized[i];
+  if (synthesized.size() > 6) names += ", ... (" + std::to_string(synthesized.size()) + " joints)";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "coverage: %.2f-%.2f s is poorly covered by the database (its nearest match leaves %.0f%% of the "
+                "keyed motion unexplained); ",
+                stretch.first_frame / rate_hz, stretch.last_frame / rate_hz, 100.0 * stretch.worst_unexplained);
+  std::string out = text;
+  const bool blended = !coverage.prior.empty() && stretch.max_prior_weight > 0.0;
+  if (synthesized.empty()) {
+    out += blended ? "the captured detail added to the keyed joints is taken off there"
+                   : "the captured detail added to the keyed joints there comes from other motions";
+  } else if (!blended) {
+    out += "the synthesised joints there are a guess: " + names;
+  } else {
+    std::snprintf(text, sizeof text, " blended up to %.0f%% towards the %s", 100.0 * stretch.max_prior_weight,
+                  coverage.prior == "mean" ? "database mean pose" : "nearest database pose");
+    out += names + text;
+  }
+  return out;
 }
 
 // LINEAR interpolation of keyed samples at `time_s` (ends held).
@@ -344,6 +375,8 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
 
   result.joints = SketchJoints(sketch.skeleton, sketch_rig.mapping, db_rig.mapping, filled.report, clip,
                                CarriedJoints(sketch.skeleton, sketch_rig.mapping));
+  for (const PoorlyCoveredStretch& stretch : filled.report.coverage.poor)
+    result.warnings.push_back(CoverageWarning(stretch, filled.report.coverage, db.rate_hz(), result.joints));
   result.report = std::move(filled.report);
   result.report.stages.insert(result.report.stages.begin(), {"retarget_prepare", retarget_prepare_s});
   result.report.stages.insert(result.report.stages.begin() + 1, {"retarget_in", retarget_in_s});

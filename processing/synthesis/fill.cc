@@ -7,6 +7,7 @@
 #include "processing/filtering/pyramid.h"
 #include "processing/synthesis/assembly.h"
 #include "processing/synthesis/baselines.h"
+#include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill_stages.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/hierarchy.h"
@@ -97,8 +98,50 @@ std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const Sketc
   return driven;
 }
 
-Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache, const SketchSignals& s,
-                         const FillOptions& options, Eigen::MatrixXd& out, FillReport& report, StageTimer& timer) {
+// How well the database covers each sketch fragment, on all keyed channels (coverage.h).
+CoverageReport MeasureSketchCoverage(const FragmentContext& ctx, CoverageYardstick& yardstick) {
+  const MotionDatabase& db = *ctx.db;
+  const FillOptions& options = *ctx.options;
+  const std::vector<DrivenChannel> driven = AllKeyedDrivers(db, *ctx.sketch, options);
+  std::vector<int> channels;
+  for (const DrivenChannel& d : driven) channels.push_back(d.channel);
+  if (!yardstick.Serves(channels, options)) {
+    yardstick = {ReferenceDistance(*ctx.mdb, driven, options), channels, options.root_feature_weight,
+                 options.min_length_ratio,
+                 options.max_length_ratio, options.coverage.reference_fragments};
+  }
+  FillOptions nearest_only = options;
+  nearest_only.candidates = 1;
+  const Eigen::MatrixXd match = MatchingSignal(ctx.sketch->values, db.rate_hz(), options);
+  const std::vector<std::vector<Candidate>> nearest =
+      MatchFragments(*ctx.mdb, match, ctx.fragments, driven, nearest_only);
+  const std::vector<float> energies = FragmentEnergies(*ctx.mdb, match, ctx.fragments, driven, options);
+  return MeasureCoverage(ctx.fragments, nearest, energies, yardstick.distance, options.coverage);
+}
+
+// Blends poorly covered stretches towards the prior: synthesised channels towards the mean
+// pose or the nearest database pose, keyed ones towards the sketch (their texture fades;
+// keys stay exact, the sketch holds them), each with its own weight.
+void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const FillOptions& options,
+                       const CoverageReport& coverage, Eigen::MatrixXd& out) {
+  const Eigen::VectorXd prior_weight = WeightPerFrame(coverage, &FragmentCoverage::prior_weight, s.frames);
+  const Eigen::VectorXd texture_weight = WeightPerFrame(coverage, &FragmentCoverage::texture_weight, s.frames);
+  if (!(prior_weight.maxCoeff() > 0.0) && !(texture_weight.maxCoeff() > 0.0)) return;
+  Eigen::MatrixXd prior = s.values;
+  if (options.coverage.prior == CoveragePrior::kMean) {
+    FillMean(s, prior);
+  } else {
+    FillNearest(db, s, options, prior);
+  }
+  std::vector<int> synthesized, keyed;
+  for (int c = 0; c < s.num_channels(); ++c) (s.keyed[c] ? keyed : synthesized).push_back(c);
+  BlendTowards(prior, prior_weight, synthesized, out);
+  BlendTowards(prior, prior_weight.cwiseMax(texture_weight), keyed, out);
+}
+
+Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
+                         CoverageYardstick& yardstick, const SketchSignals& s, const FillOptions& options,
+                         Eigen::MatrixXd& out, FillReport& report, StageTimer& timer) {
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -111,9 +154,12 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   if (!cache || !cache->Serves(s, master, band, options)) {
     ASSIGN_OR_RETURN(MatchingDatabase built, MatchingDatabase::Build(db, s, master, band, options));
     cache = std::make_unique<MatchingDatabase>(std::move(built));
+    yardstick = {};
   }
   ctx.mdb = cache.get();
   timer.Mark("filter_db");
+  report.coverage = MeasureSketchCoverage(ctx, yardstick);
+  timer.Mark("coverage");
 
   const std::vector<std::uint8_t> fixed = FixedJoints(db, s);
   std::vector<int> root_targets;
@@ -161,6 +207,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     TextureChannels(s.values, source, keyed_channels, TextureBandCount(s.key_spacing, rate), rate, out);
     if (options.repin_keys) RepinKeys(s, keyed_channels, out);
     timer.Mark("texture");
+  }
+  if (report.coverage.measured && options.coverage.blend) {
+    BlendPoorCoverage(db, s, options, report.coverage, out);
+    timer.Mark("coverage_blend");
   }
   return OkStatus();
 }
@@ -246,7 +296,7 @@ Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions&
   } else if (options.method == FillMethod::kNearest) {
     FillNearest(db_, s, options, out);
   } else {
-    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, s, options, out, report, timer));
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, s, options, out, report, timer));
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;

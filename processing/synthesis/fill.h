@@ -17,6 +17,21 @@ namespace mocapfill {
 
 class MatchingDatabase;
 
+// The coverage yardstick of a matching database (coverage.h: ReferenceDistance), the driven
+// channels and the options it was measured with; distance < 0 until measured.
+struct CoverageYardstick {
+  double distance = -1.0;
+  std::vector<int> channels;
+  double root_feature_weight = 0.0, min_length_ratio = 0.0, max_length_ratio = 0.0;
+  int reference_fragments = 0;
+
+  bool Serves(const std::vector<int>& driven_channels, const FillOptions& o) const {
+    return distance >= 0.0 && channels == driven_channels && root_feature_weight == o.root_feature_weight &&
+           min_length_ratio == o.min_length_ratio && max_length_ratio == o.max_length_ratio &&
+           reference_fragments == o.coverage.reference_fragments;
+  }
+};
+
 struct FillResult {
   MotionClip clip;   // database joint order and rate, every joint keyed at every frame
   FillReport report;
@@ -57,6 +72,7 @@ class FillEngine {
 
   const MotionDatabase& db_;
   std::unique_ptr<MatchingDatabase> cache_;
+  CoverageYardstick yardstick_;  // of cache_
   const PcaModel* given_model_ = nullptr;
   std::unique_ptr<PcaModel> built_model_;
   PcaModelOptions built_model_options_;

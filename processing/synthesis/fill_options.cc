@@ -37,6 +37,16 @@ Status FillOptions::Validate() const {
     return RangeError("root_feature_weight", root_feature_weight, "[0, 100]");
   if (db_phases < 0) return RangeError("db_phases", db_phases, "[0, inf)");
   if (threads < 0) return RangeError("threads", threads, "[0, inf)");
+  if (!(coverage.poor_share > 0.0 && coverage.poor_share < 1.0))
+    return RangeError("coverage.poor_share", coverage.poor_share, "(0, 1)");
+  if (!(coverage.none_share > coverage.poor_share && coverage.none_share <= 1.0))
+    return RangeError("coverage.none_share", coverage.none_share, "(poor_share, 1]");
+  if (!(coverage.texture_poor_share > 0.0 && coverage.texture_poor_share < 1.0))
+    return RangeError("coverage.texture_poor_share", coverage.texture_poor_share, "(0, 1)");
+  if (!(coverage.texture_none_share > coverage.texture_poor_share && coverage.texture_none_share <= 1.0))
+    return RangeError("coverage.texture_none_share", coverage.texture_none_share, "(texture_poor_share, 1]");
+  if (coverage.reference_fragments < 8 || coverage.reference_fragments > 100000)
+    return RangeError("coverage.reference_fragments", coverage.reference_fragments, "[8, 100000]");
   return pca.Validate().WithContext("pca");
 }
 

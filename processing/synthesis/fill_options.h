@@ -74,6 +74,30 @@ enum class MatchSignal {
   kLowPass,  // the sketch-filtered signal itself (keeps posture offsets; captured sketches)
 };
 
+// What a poorly covered stretch is blended towards.
+enum class CoveragePrior {
+  kMean,     // the database mean pose (method `mean`)
+  kNearest,  // the database pose nearest the keys (method `nn`)
+};
+
+// Coverage of the sketch by the database (fragment methods; coverage.h). A sketch fragment's
+// score is its unexplained share: the squared distance of its nearest database fragment on
+// the keyed channels over its squared distance to the database mean pose standing still (how
+// much of the motion the best match leaves unexplained). From `poor_share` on, a stretch is
+// reported as poorly covered and its synthesised channels are blended towards the prior,
+// fully at `none_share`. The captured detail that texturing adds to keyed channels fades
+// earlier, between the texture thresholds (detail of another motion made the keyed feet of
+// standing sketches slide: docs/fill.md, Coverage).
+struct CoverageOptions {
+  bool blend = true;  // false: only report
+  CoveragePrior prior = CoveragePrior::kMean;
+  double poor_share = 0.04;
+  double none_share = 0.08;
+  double texture_poor_share = 0.02;
+  double texture_none_share = 0.04;
+  int reference_fragments = 128;  // database fragments sampled for the takes yardstick (a median)
+};
+
 struct FillOptions {
   FillMethod method = FillMethod::kHierarchical;
   JoinCriterion join = JoinCriterion::kCostMatrix;
@@ -97,6 +121,7 @@ struct FillOptions {
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
+  CoverageOptions coverage;
   PcaMethodOptions pca;  // `pca` and `hybrid` methods only
 
   // Fails with kInvalidArgument naming the field, its value and the allowed range.
@@ -120,6 +145,38 @@ struct FragmentSource {
   int clip_last_frame = 0;
   double distance = 0.0;    // matching distance of that candidate
   int blended = 1;          // candidates averaged into the stretch
+};
+
+// How well the database covers one sketch fragment.
+struct FragmentCoverage {
+  int first_frame = 0;  // sketch frames [first_frame, last_frame]
+  int last_frame = 0;
+  double distance = 0.0;      // squared matching distance of the nearest database fragment
+  double unexplained = 0.0;   // distance / squared distance to the mean pose standing still
+  double takes_ratio = -1.0;  // sqrt(distance) / the database's own takes' (< 0: one clip only)
+  double prior_weight = 0.0;    // share of the prior blended into its synthesised channels
+  double texture_weight = 0.0;  // share of the texture taken off its keyed channels
+};
+
+// Consecutive fragments at or above CoverageOptions::poor_share.
+struct PoorlyCoveredStretch {
+  int first_frame = 0;
+  int last_frame = 0;
+  double worst_unexplained = 0.0;
+  double worst_takes_ratio = -1.0;
+  double max_prior_weight = 0.0;
+};
+
+struct CoverageReport {
+  bool measured = false;            // fragment methods only
+  double reference_distance = 0.0;  // median nearest other-take distance (not squared); 0: one clip
+  double poor_share = 0.0;          // the options' thresholds, for readers of the report
+  double none_share = 0.0;
+  double texture_poor_share = 0.0;
+  double texture_none_share = 0.0;
+  std::string prior;                // "mean", "nn"; empty when blending is off
+  std::vector<FragmentCoverage> fragments;
+  std::vector<PoorlyCoveredStretch> poor;
 };
 
 struct JointFillInfo {
@@ -151,6 +208,7 @@ struct FillReport {
   std::vector<FragmentSource> fragments;
   std::vector<StageTime> stages;
   std::vector<std::string> group_order;  // hierarchical: groups in synthesis order with drivers
+  CoverageReport coverage;
   // PCA methods: where the model came from ("given" or "built from the database"), its size,
   // and (hybrid) the Ceres summary of the key fit.
   std::string pca_model_source;

@@ -18,36 +18,60 @@ struct ScaledProblem {
   Eigen::MatrixXf database;
 };
 
-ScaledProblem Scale(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
-                    const std::vector<SketchFragment>& fragments, const std::vector<DrivenChannel>& driven,
-                    const FillOptions& options) {
-  const int samples = mdb.samples(), channels = static_cast<int>(mdb.channel_sigma().size());
+// Per driven channel: its column among the matching channels and the factor that makes a
+// squared Euclidean distance the weighted, normalised matching distance.
+struct Scaling {
+  std::vector<int> columns;
+  Eigen::VectorXf factor;
+};
+
+Scaling ScalingOf(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven) {
   const int nd = static_cast<int>(driven.size());
   double total_weight = 0.0;
   for (const DrivenChannel& d : driven) total_weight += d.weight;
-  Eigen::VectorXf scale(nd);
-  std::vector<int> columns(nd);
+  Scaling scaling{std::vector<int>(nd), Eigen::VectorXf(nd)};
   for (int i = 0; i < nd; ++i) {
-    columns[i] = driven[i].channel;
+    scaling.columns[i] = driven[i].channel;
     const double sigma = mdb.channel_sigma()[driven[i].channel];
-    scale[i] = static_cast<float>(std::sqrt(driven[i].weight / (total_weight * samples)) / sigma);
+    scaling.factor[i] = static_cast<float>(std::sqrt(driven[i].weight / (total_weight * mdb.samples())) / sigma);
   }
-  ScaledProblem p;
+  return scaling;
+}
+
+Eigen::MatrixXf ScaledDatabase(const MatchingDatabase& mdb, const Scaling& scaling) {
+  const int samples = mdb.samples(), channels = static_cast<int>(mdb.channel_sigma().size());
+  const int nd = static_cast<int>(scaling.columns.size());
+  const Eigen::MatrixXf& all = mdb.features();
+  Eigen::MatrixXf database(all.rows(), samples * nd);
+  for (int s = 0; s < samples; ++s)
+    for (int i = 0; i < nd; ++i)
+      database.col(s * nd + i) = all.col(s * channels + scaling.columns[i]) * scaling.factor[i];
+  return database;
+}
+
+Eigen::MatrixXf ScaledQueries(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                              const std::vector<SketchFragment>& fragments, const Scaling& scaling,
+                              const FillOptions& options) {
+  const int samples = mdb.samples();
+  const int nd = static_cast<int>(scaling.columns.size());
   const Eigen::MatrixXf sketch_f = sketch_match.cast<float>();
-  p.queries.resize(static_cast<Eigen::Index>(fragments.size()), samples * nd);
+  Eigen::MatrixXf queries(static_cast<Eigen::Index>(fragments.size()), samples * nd);
   std::vector<float> row(samples * nd);
   for (size_t f = 0; f < fragments.size(); ++f) {
     double wa, wb;
     MatchingWindow(fragments[f].first, fragments[f].last, options.context_fraction, wa, wb);
-    SampleWindow(sketch_f, wa, wb, samples, columns, row.data());
+    SampleWindow(sketch_f, wa, wb, samples, scaling.columns, row.data());
     for (int s = 0; s < samples; ++s)
-      for (int i = 0; i < nd; ++i) p.queries(f, s * nd + i) = row[s * nd + i] * scale[i];
+      for (int i = 0; i < nd; ++i) queries(f, s * nd + i) = row[s * nd + i] * scaling.factor[i];
   }
-  const Eigen::MatrixXf& all = mdb.features();
-  p.database.resize(all.rows(), samples * nd);
-  for (int s = 0; s < samples; ++s)
-    for (int i = 0; i < nd; ++i) p.database.col(s * nd + i) = all.col(s * channels + columns[i]) * scale[i];
-  return p;
+  return queries;
+}
+
+ScaledProblem Scale(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                    const std::vector<SketchFragment>& fragments, const std::vector<DrivenChannel>& driven,
+                    const FillOptions& options) {
+  const Scaling scaling = ScalingOf(mdb, driven);
+  return {ScaledQueries(mdb, sketch_match, fragments, scaling, options), ScaledDatabase(mdb, scaling)};
 }
 
 bool Admissible(const SketchFragment& query, const DbFragment& db, const FillOptions& options) {
@@ -64,6 +88,18 @@ std::vector<Candidate> Best(std::vector<Candidate> all, int k) {
   std::partial_sort(all.begin(), all.begin() + keep, all.end(), less);
   all.resize(keep);
   return all;
+}
+
+// Runs work(i) for i in [0, n) on `threads` threads (0: one per core).
+template <typename Work>
+void ForEachIndex(int n, int threads, const Work& work) {
+  const int workers = std::max(1, std::min(n, threads > 0 ? threads : int(std::thread::hardware_concurrency())));
+  std::vector<std::thread> pool;
+  for (int w = 0; w < workers; ++w)
+    pool.emplace_back([&, w] {
+      for (int i = w; i < n; i += workers) work(i);
+    });
+  for (std::thread& t : pool) t.join();
 }
 
 }  // namespace
@@ -119,14 +155,34 @@ std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, 
     }
     result[f] = Best(admissible.empty() ? std::move(any) : std::move(admissible), options.candidates);
   };
-  const int workers = std::max(1, options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency()));
-  std::vector<std::thread> threads;
-  for (int w = 0; w < workers; ++w)
-    threads.emplace_back([&, w] {
-      for (int f = w; f < nf; f += workers) work(f);
-    });
-  for (std::thread& t : threads) t.join();
+  ForEachIndex(nf, options.threads, work);
   return result;
+}
+
+std::vector<float> FragmentEnergies(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                                    const std::vector<SketchFragment>& fragments,
+                                    const std::vector<DrivenChannel>& driven, const FillOptions& options) {
+  const Eigen::VectorXf norms =
+      ScaledQueries(mdb, sketch_match, fragments, ScalingOf(mdb, driven), options).rowwise().squaredNorm();
+  return std::vector<float>(norms.data(), norms.data() + norms.size());
+}
+
+std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb, const std::vector<int>& queries,
+                                             const std::vector<DrivenChannel>& driven, const FillOptions& options) {
+  const Eigen::MatrixXf database = ScaledDatabase(mdb, ScalingOf(mdb, driven));
+  const Eigen::VectorXf norms = database.rowwise().squaredNorm();
+  const std::vector<DbFragment>& all = mdb.fragments();
+  std::vector<float> nearest(queries.size(), std::numeric_limits<float>::infinity());
+  ForEachIndex(static_cast<int>(queries.size()), options.threads, [&](int q) {
+    const int row = queries[q];
+    const DbFragment& own = all[row];
+    const SketchFragment as_sketch{own.first, own.last, own.rising};
+    const Eigen::VectorXf dots = database * database.row(row).transpose();
+    for (Eigen::Index r = 0; r < dots.size(); ++r)
+      if (all[r].clip != own.clip && Admissible(as_sketch, all[r], options))
+        nearest[q] = std::min(nearest[q], std::max(0.0f, norms[row] + norms[r] - 2.0f * dots[r]));
+  });
+  return nearest;
 }
 
 }  // namespace mocapfill

@@ -18,3 +18,9 @@ mocapfill_add_test(hybrid_loso_tests
   CORPUS [=[.]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_loso_test.cc
   LIBS mocapfill_evaluation mocapfill_mfdb mocapfill_formats)
+
+# Coverage of the sketch by the database: warnings and blending towards the mean pose (issue 15).
+mocapfill_add_test(coverage_tests
+  CORPUS [=[^Coverage\.(DanceAgainstTheDefaultDatabaseWarnsAndIsNoWorseThanMean|CapturedWalkOfAnotherStyleIsCovered)$]=]
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/coverage_test.cc
+  LIBS mocapfill_test_default_db mocapfill_sketch_fill mocapfill_evaluation mocapfill_synthesis mocapfill_formats)

@@ -64,6 +64,7 @@ Result<std::unique_ptr<Node>> CreateFill(const NodeOptions& o) {
   options.max_drivers = o.Int("max_drivers");
   options.fragment_band_hz = o.Number("fragment_band_hz");
   options.threads = o.Int("threads");
+  options.coverage.blend = o.Bool("blend_poor_coverage");
   RETURN_IF_ERROR(options.Validate());
   ASSIGN_OR_RETURN(sketch_options.rest, ParseRestSource(o.String("rest")));
   sketch_options.output_rate_hz = o.Number("rate_hz");
@@ -96,6 +97,8 @@ NodeTypeSpec FillNodeSpec() {
       IntOption("max_drivers", 3, 0, std::nullopt, "hierarchical: driving joints per group (0 = all)"),
       NumberOption("fragment_band_hz", 1.0, 0.0, true, std::nullopt, "Hz", "peak frequency of the fragmentation band"),
       IntOption("threads", 0, 0, std::nullopt, "matching threads (0 = all cores)"),
+      BoolOption("blend_poor_coverage", true,
+                 "blend stretches the database covers poorly towards its mean pose (false: only warn)"),
       ListOption("rename", OptionType::kStringMap,
                  "rig map overrides: sketch joint -> canonical bone or database joint, e.g. {\"Hip\": \"hips\"}"),
       RestOption(),
