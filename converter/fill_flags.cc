@@ -54,6 +54,24 @@ void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
   command.add_option("--threads", options.threads, "Matching threads (0 = all cores)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
+  command.add_option("--coverage", text.coverage,
+                     "Stretches the database covers poorly: blend (their synthesised joints towards the prior) or "
+                     "warn (only report them)")
+      ->check(CLI::IsMember({"blend", "warn"}))
+      ->capture_default_str();
+  command.add_option("--coverage-prior", text.coverage_prior,
+                     "What poorly covered stretches blend towards: mean (database mean pose) or nn (nearest pose)")
+      ->check(CLI::IsMember({"mean", "nn"}))
+      ->capture_default_str();
+  command.add_option("--coverage-poor", options.coverage.poor_share,
+                     "Poorly covered where the nearest database match leaves at least this share of the keyed "
+                     "motion unexplained")
+      ->check(CLI::Range(0.001, 0.999))
+      ->capture_default_str();
+  command.add_option("--coverage-none", options.coverage.none_share,
+                     "Not covered at all (the prior alone) from this unexplained share on (above --coverage-poor)")
+      ->check(CLI::Range(0.002, 1.0))
+      ->capture_default_str();
 }
 
 void AddPcaMethodFlags(CLI::App& command, FillOptions& options, FillFlagText& text) {
@@ -97,6 +115,8 @@ void AddPcaMethodFlags(CLI::App& command, FillOptions& options, FillFlagText& te
 Status ApplyFillFlagText(const FillFlagText& text, FillOptions& options) {
   ASSIGN_OR_RETURN(options.join, ParseJoinCriterion(text.join));
   options.texture = text.texture == "on";
+  options.coverage.blend = text.coverage == "blend";
+  options.coverage.prior = text.coverage_prior == "nn" ? CoveragePrior::kNearest : CoveragePrior::kMean;
   options.match_signal = text.match == "band" ? MatchSignal::kBand : MatchSignal::kLowPass;
   options.blend = std::min(options.blend, options.candidates);  // a smaller K caps the blend
   options.pca.fit.full_pose = text.pca_fit == "full-pose";

@@ -13,6 +13,8 @@ namespace mocapfill::cli {
 struct FillFlagText {
   std::string join = "cost-matrix";
   std::string texture = "on";
+  std::string coverage = "blend";        // blend or warn
+  std::string coverage_prior = "mean";   // mean or nn
   std::string match = "lowpass";
   std::string pca_fit = "subspace";      // hybrid: subspace or full-pose
   std::string keyed_base = "fit";        // hybrid: fit or sketch
@@ -21,7 +23,7 @@ struct FillFlagText {
 };
 
 // Adds --join, --texture, --candidates, --blend, --match, --context, --drivers, --phases,
-// --samples, --fragment-hz, --threads bound to `options` / `text`.
+// --samples, --fragment-hz, --threads, --coverage, --coverage-prior, --coverage-poor, --coverage-none bound to `options` / `text`.
 void AddFillFlags(CLI::App& command, FillOptions& options, FillFlagText& text);
 
 // Adds the PCA-method flags (`pca`, `hybrid`): --pca-fit, --guide-deg, --key-deg, --variance,

@@ -21,7 +21,7 @@ namespace mocapfill::cli {
 namespace {
 
 struct EvalArgs {
-  std::vector<std::string> db;
+  std::vector<std::string> db, against;
   std::string loso = "style";
   std::string keep = "Hips,UpperLeg_L,LowerLeg_L,Foot_L,Toes_L,UpperLeg_R,LowerLeg_R,Foot_R,Toes_R";
   int every = 8;
@@ -48,11 +48,13 @@ nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
 
 void PrintJson(const EvaluationResult& r, const EvalArgs& args) {
   nlohmann::ordered_json out;
-  out["protocol"] = {{"loso", args.loso}, {"keep", args.keep}, {"every", args.every}, {"folds", r.folds}};
+  out["protocol"] = {{"loso", args.against.empty() ? nlohmann::ordered_json(args.loso) : nullptr},
+                     {"against", args.against}, {"keep", args.keep}, {"every", args.every}, {"folds", r.folds}};
   nlohmann::ordered_json summary = nlohmann::ordered_json::array();
   for (const SummaryRow& row : r.summary) {
     nlohmann::ordered_json e = {{"method", row.method}, {"category", row.category}, {"clips", row.clips}};
     e["metrics"] = MetricsJson(row.mean);
+    e["coverage"] = {{"median_unexplained", row.coverage_median_unexplained}, {"poorly_covered_share", row.poorly_covered_share}};
     e["fill_seconds"] = row.fill_seconds;
     e["seconds_per_second"] = row.seconds_per_s;
     summary.push_back(e);
@@ -61,31 +63,38 @@ void PrintJson(const EvaluationResult& r, const EvalArgs& args) {
   nlohmann::ordered_json clips = nlohmann::ordered_json::array();
   for (const ClipScore& s : r.scores)
     clips.push_back({{"clip", s.clip}, {"fold", s.fold}, {"category", s.category}, {"method", s.method},
-                     {"metrics", MetricsJson(s.metrics)}, {"fill_seconds", s.fill_seconds}});
+                     {"metrics", MetricsJson(s.metrics)},
+                     {"coverage", {{"median_unexplained", s.coverage_median_unexplained},
+                                   {"poorly_covered_share", s.poorly_covered_share}}},
+                     {"fill_seconds", s.fill_seconds}});
   out["clips"] = clips;
   std::printf("%s\n", out.dump(2).c_str());
 }
 
 void PrintTable(const EvaluationResult& r, const EvalArgs& args) {
-  std::printf("leave-one-%s-out: %d folds, keep %s every %d frames\n", args.loso.c_str(), r.folds, args.keep.c_str(),
-              args.every);
-  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %9s\n", "category", "method", "clips", "unkeyed",
-              "keyed-btw", "angle", "NPSS", "jitter", "skate", "skate%", "key-mean", "key-max", "ms/fill");
-  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %9s\n", "", "", "", "cm", "cm", "deg", "", "ratio",
-              "cm/s", "", "deg", "deg", "");
+  if (args.against.empty()) {
+    std::printf("leave-one-%s-out: %d folds, keep %s every %d frames\n", args.loso.c_str(), r.folds,
+                args.keep.c_str(), args.every);
+  } else {
+    std::printf("against a fixed database: keep %s every %d frames\n", args.keep.c_str(), args.every);
+  }
+  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %6s %9s\n", "category", "method", "clips", "unkeyed",
+              "keyed-btw", "angle", "NPSS", "jitter", "skate", "skate%", "key-mean", "key-max", "poor%", "ms/fill");
+  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %6s %9s\n", "", "", "", "cm", "cm", "deg", "",
+              "ratio", "cm/s", "", "deg", "deg", "", "");
   for (const char* category : {"locomotion", "gestures", "all"})
     for (const SummaryRow& row : r.summary) {
       if (row.category != category) continue;
       const FillMetrics& m = row.mean;
-      std::printf("%-11s %-13s %5d %9.3f %9.3f %8.2f %7.4f %7.3f %8.2f %6.1f %8.4f %8.4f %9.1f\n", category,
+      std::printf("%-11s %-13s %5d %9.3f %9.3f %8.2f %7.4f %7.3f %8.2f %6.1f %8.4f %8.4f %6.1f %9.1f\n", category,
                   row.method.c_str(), row.clips, m.mpjpe_unkeyed_cm, m.mpjpe_keyed_between_cm, m.angle_unkeyed_deg,
                   m.npss, m.jitter_ratio, m.foot_skate_cm_per_s, 100.0 * m.foot_skate_share, m.key_error_mean_deg,
-                  m.key_error_max_deg, 1000.0 * row.fill_seconds);
+                  m.key_error_max_deg, 100.0 * row.poorly_covered_share, 1000.0 * row.fill_seconds);
     }
 }
 
-Result<std::vector<LabeledClip>> LoadClips(const EvalArgs& args) {
-  ASSIGN_OR_RETURN(const std::vector<std::string> files, ListMotionFiles(args.db));
+Result<std::vector<LabeledClip>> LoadClips(const std::vector<std::string>& paths) {
+  ASSIGN_OR_RETURN(const std::vector<std::string> files, ListMotionFiles(paths));
   Progress progress("loading", files.size());
   ASSIGN_OR_RETURN(std::vector<LabeledScene> scenes,
                    ImportMotionFiles(files, ImportOptions{}, 0, [&progress] { progress.Advance(); }));
@@ -146,10 +155,16 @@ int RunEval(EvalArgs& args) {
     PrintError(flags.message());
     return kExitUsage;
   }
-  Result<std::vector<LabeledClip>> clips = LoadClips(args);
+  Result<std::vector<LabeledClip>> clips = LoadClips(args.db);
   if (!clips.ok()) {
     PrintError(clips.status().message());
     return ExitCodeFor(clips.status(), Stage::kInput);
+  }
+  Result<std::vector<LabeledClip>> against = std::vector<LabeledClip>{};
+  if (!args.against.empty()) against = LoadClips(args.against);
+  if (!against.ok()) {
+    PrintError(against.status().message());
+    return ExitCodeFor(against.status(), Stage::kInput);
   }
   if (!args.save_sketches.empty()) {
     const Status saved = SaveSketches(*clips, options, args.save_sketches);
@@ -161,7 +176,8 @@ int RunEval(EvalArgs& args) {
     if (!progress) progress = std::make_unique<Progress>("scoring", total);
     progress->Advance();
   };
-  Result<EvaluationResult> result = RunLeaveOneOut(*clips, options);
+  Result<EvaluationResult> result =
+      args.against.empty() ? RunLeaveOneOut(*clips, options) : RunAgainstDatabase(*clips, *against, options);
   progress.reset();
   if (!result.ok()) {
     PrintError(result.status().message());
@@ -185,6 +201,9 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
       ->required();
   command->add_option("--loso", args->loso, "Clip label whose values form the folds (leave-one-out)")
       ->capture_default_str();
+  command->add_option("--against", args->against,
+                      "Motion files or folders of a fixed database: every --db clip is tested against it "
+                      "(no leave-one-out)");
   command->add_option("--keep", args->keep, "Joints kept in the sketches (comma-separated)")->capture_default_str();
   command->add_option("--every", args->every, "Key spacing of the sketches, frames")
       ->check(CLI::Range(1, 10000))
@@ -207,7 +226,9 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
       "      --methods mean,nn,fragment,hierarchical --json > eval.json\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
-      "      --methods hierarchical,pca,hybrid --contents walk,run");
+      "      --methods hierarchical,pca,hybrid --contents walk,run\n"
+      "  mocapfill eval --db ../shared/data/bandai-namco-1/data --contents dance-short,kick,punch \\\n"
+      "      --against fixtures/default_db --methods mean,hierarchical");
   command->callback([args, &action] { action = [args] { return RunEval(*args); }; });
 }
 

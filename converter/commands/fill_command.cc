@@ -1,5 +1,6 @@
 // mocapfill fill: completes a sketch's missing joints from a motion capture database and writes
 // the sketch's asset with a complete animation, plus an optional JSON report (issue #4).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -39,6 +40,34 @@ Result<std::map<std::string, std::string>> ReadMapArg(const std::string& arg) {
   if (first != std::string::npos && arg[first] == '{') return ParseRigMapJson(arg, "--map");
   ASSIGN_OR_RETURN(const std::string bytes, ReadFileBytes(arg));
   return ParseRigMapJson(bytes, arg);
+}
+
+// Frames of the fill (at the database rate) as seconds of the sketch; a takes ratio that
+// could not be measured (a one-clip database) as null.
+nlohmann::ordered_json CoverageJson(const CoverageReport& c, double rate_hz) {
+  const auto ratio = [](double r) { return r < 0.0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r); };
+  nlohmann::ordered_json out;
+  out["measured"] = c.measured;
+  out["poor_share"] = c.poor_share;
+  out["none_share"] = c.none_share;
+  out["texture_poor_share"] = c.texture_poor_share;
+  out["texture_none_share"] = c.texture_none_share;
+  out["takes_distance"] = c.reference_distance;
+  out["prior"] = c.prior.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.prior);
+  nlohmann::ordered_json poor = nlohmann::ordered_json::array();
+  for (const PoorlyCoveredStretch& p : c.poor)
+    poor.push_back({{"from_s", p.first_frame / rate_hz}, {"to_s", p.last_frame / rate_hz},
+                    {"worst_unexplained", p.worst_unexplained}, {"worst_takes_ratio", ratio(p.worst_takes_ratio)},
+                    {"max_prior_weight", p.max_prior_weight}});
+  out["poorly_covered"] = poor;
+  nlohmann::ordered_json fragments = nlohmann::ordered_json::array();
+  for (const FragmentCoverage& f : c.fragments)
+    fragments.push_back({{"from_s", f.first_frame / rate_hz}, {"to_s", f.last_frame / rate_hz},
+                         {"distance", f.distance}, {"unexplained", f.unexplained},
+                         {"takes_ratio", ratio(f.takes_ratio)}, {"prior_weight", f.prior_weight},
+                         {"texture_weight", f.texture_weight}});
+  out["fragments"] = fragments;
+  return out;
 }
 
 nlohmann::ordered_json ReportJson(const SketchFillResult& result, const std::string& db_name, double load_s) {
@@ -84,6 +113,7 @@ nlohmann::ordered_json ReportJson(const SketchFillResult& result, const std::str
                          {"blended", f.blended}});
   out["fragments"] = fragments;
   out["group_order"] = r.group_order;
+  out["coverage"] = CoverageJson(r.coverage, result.database_rate_hz);
   if (!r.pca_model_source.empty())
     out["pca_model"] = {{"source", r.pca_model_source}, {"components", r.pca_components}};
   if (r.has_solver) {
@@ -121,6 +151,15 @@ void PrintSummary(const SketchFillResult& result) {
   if (!result.feet.contacts.empty())
     std::fprintf(stderr, "  feet: %zu contacts held between keys, %d leg-frames, largest correction %.1f cm\n",
                  result.feet.contacts.size(), result.feet.frames_held, 100.0 * result.feet.max_correction_m);
+  if (r.coverage.measured && !r.coverage.fragments.empty()) {
+    std::vector<double> shares;
+    for (const FragmentCoverage& f : r.coverage.fragments) shares.push_back(f.unexplained);
+    std::sort(shares.begin(), shares.end());
+    std::fprintf(stderr, "  coverage: the nearest matches leave %.1f%% (median) and at worst %.1f%% of the keyed "
+                 "motion unexplained; %zu poorly covered stretch%s\n",
+                 100.0 * shares[shares.size() / 2], 100.0 * shares.back(), r.coverage.poor.size(),
+                 r.coverage.poor.size() == 1 ? "" : "es");
+  }
   std::fprintf(stderr, "  time:");
   for (const StageTime& s : r.stages) std::fprintf(stderr, " %s %.1f ms", s.stage.c_str(), 1000.0 * s.seconds);
   std::fprintf(stderr, "\n");

@@ -1,12 +1,11 @@
 #include "processing/evaluation/loso.h"
 
-#include <array>
-#include "processing/retargeting/rig_mapping.h"
-
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <set>
 
+#include "processing/retargeting/rig_mapping.h"
 #include "processing/synthesis/fill.h"
 
 namespace mocapfill {
@@ -44,12 +43,26 @@ Result<MotionDatabase> BuildFoldDatabase(const std::vector<LabeledClip>& clips, 
   return builder.Build();
 }
 
-Status ScoreFold(const std::vector<LabeledClip>& clips, const std::string& fold, const EvaluationOptions& options,
-                 int total, EvaluationResult& result) {
-  ASSIGN_OR_RETURN(const MotionDatabase db, BuildFoldDatabase(clips, fold, options));
+// Coverage figures of one fill: the median unexplained share of its fragments and the share
+// of frames inside poorly covered stretches (0 and 0 where coverage is not measured).
+void CoverageFigures(const CoverageReport& coverage, int frames, ClipScore& score) {
+  std::vector<double> shares;
+  for (const FragmentCoverage& f : coverage.fragments) shares.push_back(f.unexplained);
+  if (!shares.empty()) {
+    std::nth_element(shares.begin(), shares.begin() + shares.size() / 2, shares.end());
+    score.coverage_median_unexplained = shares[shares.size() / 2];
+  }
+  int poor = 0;
+  for (const PoorlyCoveredStretch& p : coverage.poor) poor += p.last_frame - p.first_frame + 1;
+  score.poorly_covered_share = frames > 0 ? std::min(1.0, double(poor) / frames) : 0.0;
+}
+
+// Scores the clips of `fold` (every clip when fold is empty) against `db`.
+Status ScoreClips(const std::vector<LabeledClip>& clips, const std::string& fold, const MotionDatabase& db,
+                  const EvaluationOptions& options, int total, EvaluationResult& result) {
   FillEngine engine(db);
   for (const LabeledClip& c : clips) {
-    if (Label(c, options.fold_label) != fold) continue;
+    if (!fold.empty() && Label(c, options.fold_label) != fold) continue;
     const std::string content = Label(c, "content");
     if (!options.only_contents.empty() && !Contains(options.only_contents, content)) continue;
     ASSIGN_OR_RETURN(const MotionClip sketch, MakeSketch(c.skeleton, c.clip, options.sketch));
@@ -63,8 +76,10 @@ Status ScoreFold(const std::vector<LabeledClip>& clips, const std::string& fold,
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!filled.ok()) return filled.status().WithContext("clip '" + c.clip.name + "', method " + method.name);
       ASSIGN_OR_RETURN(FillMetrics metrics, ScoreFill(c.skeleton, c.clip, sketch, filled->clip, db.root_joint()));
-      ClipScore score{c.clip.name, fold, Contains(options.locomotion_contents, content) ? "locomotion" : "gestures",
+      ClipScore score{c.clip.name, fold.empty() ? "against" : fold,
+                      Contains(options.locomotion_contents, content) ? "locomotion" : "gestures",
                       method.name, metrics, seconds, seconds / std::max(1e-9, c.clip.duration_s())};
+      CoverageFigures(filled->report.coverage, sketch.num_frames, score);
       result.scores.push_back(score);
     }
     if (options.on_clip_done) {
@@ -74,6 +89,22 @@ Status ScoreFold(const std::vector<LabeledClip>& clips, const std::string& fold,
     }
   }
   return OkStatus();
+}
+
+Status ScoreFold(const std::vector<LabeledClip>& clips, const std::string& fold, const EvaluationOptions& options,
+                 int total, EvaluationResult& result) {
+  ASSIGN_OR_RETURN(const MotionDatabase db, BuildFoldDatabase(clips, fold, options));
+  return ScoreClips(clips, fold, db, options, total, result);
+}
+
+int CountTested(const std::vector<LabeledClip>& clips, const EvaluationOptions& options,
+                const std::set<std::string>* folds) {
+  int total = 0;
+  for (const LabeledClip& c : clips)
+    if ((!folds || folds->count(Label(c, options.fold_label))) &&
+        (options.only_contents.empty() || Contains(options.only_contents, Label(c, "content"))))
+      ++total;
+  return total;
 }
 
 }  // namespace
@@ -100,6 +131,8 @@ std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const st
       for (const ClipScore& s : scores)
         if (s.method == method.name && (row.category == "all" || s.category == row.category)) {
           Accumulate(row.mean, s.metrics, w);
+          row.coverage_median_unexplained += w * s.coverage_median_unexplained;
+          row.poorly_covered_share += w * s.poorly_covered_share;
           row.fill_seconds += w * s.fill_seconds;
           row.seconds_per_s += w * s.seconds_per_s;
         }
@@ -118,16 +151,27 @@ Result<EvaluationResult> RunLeaveOneOut(const std::vector<LabeledClip>& clips, c
     if (options.only_folds.empty() || Contains(options.only_folds, fold)) folds.insert(fold);
   }
   if (folds.empty()) return InvalidArgument("no clip belongs to the requested folds");
-  int total = 0;
-  for (const LabeledClip& c : clips)
-    if (folds.count(Label(c, options.fold_label)) &&
-        (options.only_contents.empty() || Contains(options.only_contents, Label(c, "content"))))
-      ++total;
+  const int total = CountTested(clips, options, &folds);
   EvaluationResult result;
   for (const std::string& fold : folds) {
     RETURN_IF_ERROR(ScoreFold(clips, fold, options, total, result).WithContext("fold '" + fold + "'"));
     ++result.folds;
   }
+  result.summary = Summarise(result.scores, options.methods);
+  return result;
+}
+
+Result<EvaluationResult> RunAgainstDatabase(const std::vector<LabeledClip>& tests,
+                                            const std::vector<LabeledClip>& database, const EvaluationOptions& options) {
+  RETURN_IF_ERROR(options.Validate());
+  if (tests.empty()) return InvalidArgument("no clip to test");
+  if (database.empty()) return InvalidArgument("the database has no clip");
+  MotionDatabaseBuilder builder(options.database);
+  for (const LabeledClip& c : database) RETURN_IF_ERROR(builder.Add(c.skeleton, c.clip, c.labels));
+  ASSIGN_OR_RETURN(const MotionDatabase db, builder.Build());
+  EvaluationResult result;
+  RETURN_IF_ERROR(ScoreClips(tests, "", db, options, CountTested(tests, options, nullptr), result));
+  result.folds = 1;
   result.summary = Summarise(result.scores, options.methods);
   return result;
 }

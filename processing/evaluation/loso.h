@@ -57,6 +57,8 @@ struct ClipScore {
   FillMetrics metrics;
   double fill_seconds = 0.0;
   double seconds_per_s = 0.0;  // fill time per second of animation
+  double coverage_median_unexplained = 0.0;  // fragment methods: median FragmentCoverage::unexplained
+  double poorly_covered_share = 0.0;   // share of the sketch's frames in poorly covered stretches
 };
 
 struct SummaryRow {
@@ -64,6 +66,8 @@ struct SummaryRow {
   std::string category;  // "locomotion", "gestures", "all"
   int clips = 0;
   FillMetrics mean;      // every metric averaged over clips
+  double coverage_median_unexplained = 0.0;  // averaged over clips
+  double poorly_covered_share = 0.0;
   double fill_seconds = 0.0;
   double seconds_per_s = 0.0;
 };
@@ -77,6 +81,12 @@ struct EvaluationResult {
 // Runs the protocol. Every clip must have the first clip's skeleton (joint names and parents)
 // and its rate. Errors: invalid options, clips without the fold label, a method failing.
 Result<EvaluationResult> RunLeaveOneOut(const std::vector<LabeledClip>& clips, const EvaluationOptions& options);
+
+// Every clip of `tests` (those of options.only_contents) sketched and filled against one
+// database built from `database` (no leave-one-out: the fold label is not used; the scores'
+// fold is "against"). Errors: invalid options, no test or database clip, a method failing.
+Result<EvaluationResult> RunAgainstDatabase(const std::vector<LabeledClip>& tests,
+                                            const std::vector<LabeledClip>& database, const EvaluationOptions& options);
 
 // Averages of `scores` per (method, category) in method order, plus an "all" row per method.
 std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const std::vector<NamedMethod>& methods);

@@ -162,6 +162,57 @@ TEST(EvalCli, LeaveOneStyleOutOnTheDefaultDatabaseScoresEveryMethod) {
   EXPECT_LT(hierarchical_cm, mean_cm);
 }
 
+// eval --against: every run clip of the default database tested against the whole default
+// database, which holds it: covered everywhere, and the fill well below the mean pose (measured
+// 5.53 against 8.16 cm: 128 candidates are averaged, so even the clip itself is not copied).
+TEST(EvalCli, AgainstAFixedDatabaseReportsCoverage) {
+  const std::string db = testing::FixturePath("default_db");
+  const RunResult run =
+      RunCli("-q eval --db " + db + " --contents run --against " + db + " --methods mean,hierarchical --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  EXPECT_TRUE(json["protocol"]["loso"].is_null());
+  EXPECT_EQ(json["protocol"]["against"][0], db);
+  ASSERT_EQ(json["clips"].size(), 6u);  // 3 run clips x 2 methods
+  for (const auto& clip : json["clips"]) EXPECT_EQ(clip["fold"], "against");
+  double mean_cm = 0.0, hierarchical_cm = 0.0;
+  for (const auto& row : json["summary"]) {
+    if (row["category"] != "all") continue;
+    if (row["method"] == "hierarchical") {
+      hierarchical_cm = row["metrics"]["mpjpe_unkeyed_cm"].get<double>();
+      EXPECT_EQ(row["coverage"]["poorly_covered_share"].get<double>(), 0.0);
+      EXPECT_LT(row["coverage"]["median_unexplained"].get<double>(), 0.01);
+    } else {
+      mean_cm = row["metrics"]["mpjpe_unkeyed_cm"].get<double>();
+    }
+  }
+  EXPECT_LT(hierarchical_cm, 0.8 * mean_cm);
+}
+
+// --coverage warn: the report carries the coverage of every fragment but blends nothing.
+TEST(FillCli, CoverageReportWithoutBlending) {
+  const std::string dir = testing::ScratchDir("fill_coverage");
+  const RunResult run =
+      RunCli("fill " + GlbSketch() + " -o " + dir + "/out.glb --coverage warn --report " + dir + "/fill.json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("coverage: the nearest matches leave"), std::string::npos) << run.output;
+  const nlohmann::json c = nlohmann::json::parse(ReadAll(dir + "/fill.json"))["coverage"];
+  EXPECT_TRUE(c["measured"].get<bool>());
+  EXPECT_TRUE(c["prior"].is_null());
+  EXPECT_EQ(c["poor_share"].get<double>(), 0.04);
+  ASSERT_GE(c["fragments"].size(), 10u);
+  for (const auto& f : c["fragments"]) {
+    EXPECT_EQ(f["prior_weight"].get<double>(), 0.0);
+    EXPECT_EQ(f["texture_weight"].get<double>(), 0.0);
+    EXPECT_GE(f["unexplained"].get<double>(), 0.0);
+    EXPECT_GT(f["takes_ratio"].get<double>(), 0.0);
+  }
+  const RunResult bad = RunCli("fill " + GlbSketch() + " -o " + dir + "/bad.glb --coverage-poor 0.2 --coverage-none 0.1");
+  EXPECT_EQ(bad.exit_code, 1) << bad.output;
+  EXPECT_NE(bad.output.find("coverage.none_share"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir + "/bad.glb"));
+}
+
 TEST(EvalCli, UnknownMethodIsAUsageError) {
   const RunResult run = RunCli("eval --db " + testing::FixturePath("default_db") + " --methods magic");
   EXPECT_EQ(run.exit_code, 1) << run.output;
