@@ -15,6 +15,7 @@
 #include "formats/motion_io.h"
 #include "processing/motion/resample.h"
 #include "processing/evaluation/loso.h"
+#include "processing/evaluation/scenarios.h"
 
 namespace mocapfill::cli {
 
@@ -23,6 +24,7 @@ namespace {
 struct EvalArgs {
   std::vector<std::string> db, against;
   std::string loso = "style";
+  std::string scenario;  // empty: --keep and --every
   std::string keep = "Hips,UpperLeg_L,LowerLeg_L,Foot_L,Toes_L,UpperLeg_R,LowerLeg_R,Foot_R,Toes_R";
   int every = 8;
   std::string methods = "mean,nn,fragment,hierarchical";
@@ -49,7 +51,9 @@ nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
 void PrintJson(const EvaluationResult& r, const EvalArgs& args) {
   nlohmann::ordered_json out;
   out["protocol"] = {{"loso", args.against.empty() ? nlohmann::ordered_json(args.loso) : nullptr},
-                     {"against", args.against}, {"keep", args.keep}, {"every", args.every}, {"folds", r.folds}};
+                     {"against", args.against},
+                     {"scenario", args.scenario.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(args.scenario)},
+                     {"keep", args.keep}, {"every", args.every}, {"folds", r.folds}};
   nlohmann::ordered_json summary = nlohmann::ordered_json::array();
   for (const SummaryRow& row : r.summary) {
     nlohmann::ordered_json e = {{"method", row.method}, {"category", row.category}, {"clips", row.clips}};
@@ -138,6 +142,17 @@ int RunEval(EvalArgs& args) {
   options.fold_label = args.loso;
   options.sketch.keep_joints = SplitList(args.keep);
   options.sketch.key_every_frames = args.every;
+  if (!args.scenario.empty()) {
+    Result<SketchScenario> scenario = FindSketchScenario(args.scenario);
+    if (!scenario.ok()) {
+      PrintError(scenario.status().message());
+      return kExitUsage;
+    }
+    options.sketch = scenario->sketch;
+    args.keep.clear();
+    for (const std::string& joint : scenario->sketch.keep_joints) args.keep += (args.keep.empty() ? "" : ",") + joint;
+    args.every = scenario->sketch.key_every_frames;
+  }
   options.only_folds = SplitList(args.folds);
   options.only_contents = SplitList(args.contents);
   options.plant_feet = args.feet == "plant";
@@ -204,6 +219,10 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--against", args->against,
                       "Motion files or folders of a fixed database: every --db clip is tested against it "
                       "(no leave-one-out)");
+  std::string scenarios;
+  for (const SketchScenario& s : SketchScenarios()) scenarios += "\n  " + s.name + ": " + s.description;
+  command->add_option("--scenario", args->scenario,
+                      "A named sketch (replaces --keep and --every):" + scenarios);
   command->add_option("--keep", args->keep, "Joints kept in the sketches (comma-separated)")->capture_default_str();
   command->add_option("--every", args->every, "Key spacing of the sketches, frames")
       ->check(CLI::Range(1, 10000))
@@ -228,7 +247,9 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
       "      --methods hierarchical,pca,hybrid --contents walk,run\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --contents dance-short,kick,punch \\\n"
-      "      --against fixtures/default_db --methods mean,hierarchical");
+      "      --against fixtures/default_db --methods mean,hierarchical\n"
+      "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --scenario upper-body \\\n"
+      "      --methods mean,hierarchical");
   command->callback([args, &action] { action = [args] { return RunEval(*args); }; });
 }
 

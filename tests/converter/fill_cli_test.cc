@@ -213,6 +213,27 @@ TEST(FillCli, CoverageReportWithoutBlending) {
   EXPECT_FALSE(fs::exists(dir + "/bad.glb"));
 }
 
+// Every named sketch (eval --scenario) scores on the default database's run clips with its keys
+// exact; an unknown name is a usage error listing the known ones.
+TEST(EvalCli, EveryScenarioKeepsItsKeys) {
+  for (const char* scenario : {"legs8", "legs4", "legs16", "upper-body", "root", "root-arms"}) {
+    const RunResult run = RunCli("-q eval --db " + testing::FixturePath("default_db") +
+                                 " --contents run --folds happy --methods mean,hierarchical --json --scenario " +
+                                 scenario);
+    ASSERT_EQ(run.exit_code, 0) << scenario << ": " << run.output;
+    const nlohmann::json json = nlohmann::json::parse(run.output);
+    EXPECT_EQ(json["protocol"]["scenario"], scenario);
+    ASSERT_EQ(json["clips"].size(), 2u) << scenario;
+    for (const auto& clip : json["clips"]) {
+      EXPECT_LT(clip["metrics"]["key_error_max_deg"].get<double>(), 0.01) << scenario;
+      EXPECT_GT(clip["metrics"]["mpjpe_unkeyed_cm"].get<double>(), 0.0) << scenario;
+    }
+  }
+  const RunResult bad = RunCli("eval --db " + testing::FixturePath("default_db") + " --scenario dance");
+  EXPECT_EQ(bad.exit_code, 1) << bad.output;
+  EXPECT_NE(bad.output.find("unknown scenario 'dance' (known: legs8, legs4"), std::string::npos) << bad.output;
+}
+
 TEST(EvalCli, UnknownMethodIsAUsageError) {
   const RunResult run = RunCli("eval --db " + testing::FixturePath("default_db") + " --methods magic");
   EXPECT_EQ(run.exit_code, 1) << run.output;
