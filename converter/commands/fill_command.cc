@@ -19,6 +19,7 @@
 #include "formats/pca/pca_file.h"
 #include "processing/retargeting/rig_mapping.h"
 #include "processing/sketch_fill/sketch_fill.h"
+#include "processing/synthesis/coverage.h"
 
 namespace mocapfill::cli {
 
@@ -152,12 +153,12 @@ void PrintSummary(const SketchFillResult& result) {
     std::fprintf(stderr, "  feet: %zu contacts held between keys, %d leg-frames, largest correction %.1f cm\n",
                  result.feet.contacts.size(), result.feet.frames_held, 100.0 * result.feet.max_correction_m);
   if (r.coverage.measured && !r.coverage.fragments.empty()) {
-    std::vector<double> shares;
-    for (const FragmentCoverage& f : r.coverage.fragments) shares.push_back(f.unexplained);
-    std::sort(shares.begin(), shares.end());
+    const auto less = [](const FragmentCoverage& a, const FragmentCoverage& b) { return a.unexplained < b.unexplained; };
+    const double worst =
+        std::max_element(r.coverage.fragments.begin(), r.coverage.fragments.end(), less)->unexplained;
     std::fprintf(stderr, "  coverage: the nearest matches leave %.1f%% (median) and at worst %.1f%% of the keyed "
                  "motion unexplained; %zu poorly covered stretch%s\n",
-                 100.0 * shares[shares.size() / 2], 100.0 * shares.back(), r.coverage.poor.size(),
+                 100.0 * MedianUnexplained(r.coverage), 100.0 * worst, r.coverage.poor.size(),
                  r.coverage.poor.size() == 1 ? "" : "es");
   }
   std::fprintf(stderr, "  time:");

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "processing/retargeting/rig_mapping.h"
+#include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill.h"
 
 namespace mocapfill {
@@ -46,12 +47,7 @@ Result<MotionDatabase> BuildFoldDatabase(const std::vector<LabeledClip>& clips, 
 // Coverage figures of one fill: the median unexplained share of its fragments and the share
 // of frames inside poorly covered stretches (0 and 0 where coverage is not measured).
 void CoverageFigures(const CoverageReport& coverage, int frames, ClipScore& score) {
-  std::vector<double> shares;
-  for (const FragmentCoverage& f : coverage.fragments) shares.push_back(f.unexplained);
-  if (!shares.empty()) {
-    std::nth_element(shares.begin(), shares.begin() + shares.size() / 2, shares.end());
-    score.coverage_median_unexplained = shares[shares.size() / 2];
-  }
+  score.coverage_median_unexplained = MedianUnexplained(coverage);
   int poor = 0;
   for (const PoorlyCoveredStretch& p : coverage.poor) poor += p.last_frame - p.first_frame + 1;
   score.poorly_covered_share = frames > 0 ? std::min(1.0, double(poor) / frames) : 0.0;

@@ -67,6 +67,15 @@ CoverageReport MeasureCoverage(const std::vector<SketchFragment>& fragments,
   return report;
 }
 
+double MedianUnexplained(const CoverageReport& coverage) {
+  std::vector<double> shares;
+  for (const FragmentCoverage& f : coverage.fragments) shares.push_back(f.unexplained);
+  if (shares.empty()) return 0.0;
+  const auto middle = shares.begin() + shares.size() / 2;
+  std::nth_element(shares.begin(), middle, shares.end());
+  return *middle;
+}
+
 Eigen::VectorXd WeightPerFrame(const CoverageReport& coverage, double FragmentCoverage::*of, int frames) {
   Eigen::VectorXd weight = Eigen::VectorXd::Zero(frames);
   const std::vector<FragmentCoverage>& f = coverage.fragments;

@@ -32,6 +32,10 @@ CoverageReport MeasureCoverage(const std::vector<SketchFragment>& fragments,
                                const std::vector<std::vector<Candidate>>& nearest, const std::vector<float>& energies,
                                double reference, const CoverageOptions& options);
 
+// The median of the fragments' unexplained shares (the upper one of an even count); 0 when
+// there is no fragment.
+double MedianUnexplained(const CoverageReport& coverage);
+
 // A per-fragment weight (FragmentCoverage::prior_weight or ::texture_weight) at every frame:
 // each fragment's weight at its middle frame, linear in between, held before the first middle
 // and after the last (no step at fragment seams).
