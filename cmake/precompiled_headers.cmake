@@ -2,8 +2,8 @@
 # nlohmann/json; every CLI verb includes CLI11 (about 9 s of parsing per file on its own).
 # Parsing them once per class of targets rather than once per file halves a clean build.
 # Three owner targets hold the headers, and every target of ours reuses its class's one
-# (mocapfill_apply_precompiled_headers, called once all targets exist). Targets built as
-# position-independent code take different flags, so they compile without.
+# (mocapfill_apply_precompiled_headers, called once all targets exist). Shared libraries and
+# plug-ins hide their symbols, which takes different flags, so they compile without.
 option(MOCAPFILL_PCH "Precompile the common third-party headers" ON)
 
 set(MOCAPFILL_PCH_STD <algorithm> <array> <cmath> <cstdint> <functional> <map> <memory> <optional>
@@ -35,10 +35,9 @@ function(mocapfill_apply_precompiled_headers)
   endif()
   get_property(targets GLOBAL PROPERTY MOCAPFILL_TARGETS)
   foreach(target ${targets})
-    get_target_property(pic ${target} POSITION_INDEPENDENT_CODE)
     get_target_property(type ${target} TYPE)
     get_target_property(dir ${target} SOURCE_DIR)
-    if(pic OR type STREQUAL "MODULE_LIBRARY" OR target MATCHES "^mocapfill_pch_")
+    if(type MATCHES "^(MODULE|SHARED)_LIBRARY$" OR target MATCHES "^mocapfill_pch_")
       continue()
     endif()
     file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${dir})

@@ -1,20 +1,15 @@
 #include "converter/exit_codes.h"
 
 #include "converter/console.h"
+#include "library/failure_class.h"
 
 namespace mocapfill::cli {
 
 ExitCode ExitCodeFor(const Status& status, Stage stage) {
-  switch (status.code()) {
-    case ErrorCode::kOk: return kExitOk;
-    case ErrorCode::kInvalidArgument: return kExitUsage;
-    case ErrorCode::kInvalidData:
-    case ErrorCode::kUnsupported: return stage == Stage::kOutput ? kExitOutput : kExitInvalidInput;
-    case ErrorCode::kIoError: return stage == Stage::kOutput ? kExitOutput : kExitInvalidInput;
-    case ErrorCode::kNumericalFailure:
-    case ErrorCode::kInternal: return kExitProcessing;
-  }
-  return kExitProcessing;
+  const FailureStage where = stage == Stage::kInput        ? FailureStage::kInput
+                             : stage == Stage::kOutput     ? FailureStage::kOutput
+                                                           : FailureStage::kProcessing;
+  return static_cast<ExitCode>(FailureClass(status, where));
 }
 
 int Fail(const Status& status, Stage stage) {

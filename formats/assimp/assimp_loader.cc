@@ -23,8 +23,9 @@ namespace fs = std::filesystem;
 
 // Where the module may be, in order: $MOCAPFILL_ASSIMP_MODULE (an explicit file), beside
 // the executable (the build tree), <prefix>/lib/mocapfill/ (installed: the executable is
-// in <prefix>/bin, or mocapfill-full in <prefix>/libexec/mocapfill), and the path it was
-// built at (test programs in the build tree).
+// in <prefix>/bin, or mocapfill-full in <prefix>/libexec/mocapfill), <libdir>/mocapfill/
+// beside the shared library holding this code (the public API's, in <prefix>/lib), and the
+// path it was built at (test programs in the build tree).
 std::vector<std::string> Candidates() {
   std::vector<std::string> paths;
   if (const char* env = std::getenv("MOCAPFILL_ASSIMP_MODULE"); env != nullptr && *env != '\0') {
@@ -38,6 +39,12 @@ std::vector<std::string> Candidates() {
     paths.push_back((dir / assimp_module::kFileName).string());
     paths.push_back((dir.parent_path() / "lib" / "mocapfill" / assimp_module::kFileName).string());
     paths.push_back((dir.parent_path().parent_path() / "lib" / "mocapfill" / assimp_module::kFileName).string());
+  }
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&ReadWithAssimpModule), &info) != 0 && info.dli_fname != nullptr) {
+    const fs::path library = fs::weakly_canonical(fs::absolute(info.dli_fname, ec), ec);
+    if (!ec && library.filename().string().find(".so") != std::string::npos)
+      paths.push_back((library.parent_path() / "mocapfill" / assimp_module::kFileName).string());
   }
   const std::string built = MOCAPFILL_ASSIMP_MODULE_BUILD_PATH;
   if (!built.empty()) paths.push_back(built);
