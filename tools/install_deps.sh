@@ -8,6 +8,9 @@ packages=(
   libeigen3-dev libtinygltf-dev libassimp-dev assimp-utils libceres-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   bc
+  # The clients the tests drive: the Python module (pybind11, numpy, pytest) and Blender
+  # (its glTF importer and the add-on).
+  python3-dev pybind11-dev python3-numpy python3-pytest blender
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang-14 libclang-rt-14-dev)
