@@ -214,8 +214,8 @@ int RunAnalyze(const AnalyzeArgs& args) {
   options.pyramid.levels = args.levels;
   options.phase_band_hz = args.band_hz;
   if (!args.joint.empty()) {
-    const std::optional<int> j = skeleton.Find(args.joint);
-    if (!j) return Fail(InvalidArgument("--joint: no joint named '" + args.joint + "'"), Stage::kInput);
+    const Result<int> j = FindJointNamed(skeleton, args.joint, "--joint");
+    if (!j.ok()) return Fail(j.status(), Stage::kInput);
     options.master_joint = *j;
   }
   if (!args.axis.empty()) options.master_axis = args.axis == "x" ? 0 : args.axis == "y" ? 1 : 2;

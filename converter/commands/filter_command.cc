@@ -47,9 +47,8 @@ Result<TangentReference> ReferenceFor(const Skeleton& skeleton, const MotionData
 Result<std::vector<int>> JointIndices(const Skeleton& skeleton, const std::vector<std::string>& names) {
   std::vector<int> indices;
   for (const std::string& name : names) {
-    const std::optional<int> j = skeleton.Find(name);
-    if (!j) return InvalidArgument("--joints: no joint named '" + name + "' in the input skeleton");
-    indices.push_back(*j);
+    ASSIGN_OR_RETURN(const int j, FindJointNamed(skeleton, name, "--joints"));
+    indices.push_back(j);
   }
   return indices;
 }

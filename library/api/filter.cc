@@ -12,9 +12,7 @@ Scene Filter(const Scene& scene, const FilterOptions& options) {
   filter.gains.residual_gain = options.residual_gain;
   filter.pyramid.levels = options.levels;
   for (const std::string& name : options.joints) {
-    const std::optional<int> joint = out.skeleton.Find(name);
-    if (!joint) ThrowIfError(InvalidArgument("joints: no joint named '" + name + "'"), FailureStage::kProcessing);
-    filter.joints.push_back(*joint);
+    filter.joints.push_back(ValueOrThrow(FindJointNamed(out.skeleton, name, "joints"), FailureStage::kProcessing));
   }
   ThrowIfError(filter.Validate(), FailureStage::kProcessing);
   for (MotionClip& clip : out.clips) {

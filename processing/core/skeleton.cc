@@ -1,5 +1,7 @@
 #include "processing/core/skeleton.h"
 
+#include "processing/core/closest_names.h"
+
 #include <cmath>
 #include <unordered_set>
 
@@ -53,6 +55,14 @@ int Skeleton::HierarchyDistance(int a, int b) const {
     ++steps;
   }
   return steps;
+}
+
+Result<int> FindJointNamed(const Skeleton& skeleton, const std::string& name, const std::string& what,
+                           ErrorCode code) {
+  if (const std::optional<int> joint = skeleton.Find(name)) return *joint;
+  std::vector<std::string> names;
+  for (const Joint& j : skeleton.joints()) names.push_back(j.name);
+  return Status(code, what + ": no joint named '" + name + "' (closest: " + QuotedClosestNames(name, names) + ")");
 }
 
 }  // namespace mocapfill

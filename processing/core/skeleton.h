@@ -69,4 +69,9 @@ class Skeleton {
   std::vector<Joint> joints_;
 };
 
+// The joint named `name`, or an error of `code`: "<what>: no joint named 'X' (closest: 'A',
+// 'B', 'C')", so that a misspelt name is answered with the names it was probably meant as.
+Result<int> FindJointNamed(const Skeleton& skeleton, const std::string& name, const std::string& what,
+                           ErrorCode code = ErrorCode::kInvalidArgument);
+
 }  // namespace mocapfill

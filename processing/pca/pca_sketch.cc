@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "processing/core/closest_names.h"
 #include "processing/core/stopwatch.h"
 #include "processing/motion/tangent_space.h"
 #include "processing/pca/pca_clip.h"
@@ -91,7 +92,8 @@ Result<std::vector<PositionKey>> ResolvePositionKeys(const PcaModel& model, cons
   for (const SketchPositionKey& key : keys) {
     const auto it = std::find(model.joint_names.begin(), model.joint_names.end(), key.joint);
     if (it == model.joint_names.end())
-      return InvalidArgument("position key on unknown joint '" + key.joint + "'");
+      return InvalidArgument("position key on unknown joint '" + key.joint + "' (closest: " +
+                             QuotedClosestNames(key.joint, model.joint_names) + ")");
     out.push_back({key.frame, static_cast<int>(it - model.joint_names.begin()), key.position_m});
   }
   return out;

@@ -295,15 +295,6 @@ void CheckSides(const RigStructure& rig, const std::vector<Eigen::Vector3d>& pos
   if (decided) m.notes.push_back("left and right checked against the pose (toes ahead of the ankles give forward)");
 }
 
-std::vector<std::string> ClosestJointNames(const Skeleton& skeleton, const std::string& name) {
-  std::vector<std::pair<int, std::string>> scored;
-  for (const Joint& j : skeleton.joints()) scored.emplace_back(rig_names::EditDistance(name, j.name), j.name);
-  std::sort(scored.begin(), scored.end());
-  std::vector<std::string> out;
-  for (size_t i = 0; i < scored.size() && i < 3; ++i) out.push_back(scored[i].second);
-  return out;
-}
-
 std::string ValidBoneNames() {
   std::string out;
   for (int i = 0; i < kNumHumanoidBones; ++i) out += (i ? ", " : "") + std::string(HumanoidBoneName(BoneAt(i)));
@@ -315,9 +306,7 @@ Status ApplyOverrides(const Skeleton& skeleton, const std::map<std::string, std:
   for (const auto& [joint_name, bone_name] : overrides) {
     const std::optional<int> joint = skeleton.Find(joint_name);
     if (!joint) {
-      std::string closest;
-      for (const std::string& c : ClosestJointNames(skeleton, joint_name)) closest += (closest.empty() ? "" : ", ") + Quoted(c);
-      return InvalidData("rig map: no joint named " + Quoted(joint_name) + " in the skeleton (closest: " + closest + ")");
+      return FindJointNamed(skeleton, joint_name, "rig map", ErrorCode::kInvalidData).status();
     }
     for (int& j : m.joints)
       if (j == *joint) j = -1;

@@ -159,20 +159,4 @@ std::string DetectFamily(const Skeleton& skeleton) {
   return "unknown";
 }
 
-int EditDistance(std::string_view a, std::string_view b) {
-  const std::string x = Lower(a), y = Lower(b);
-  std::vector<int> row(y.size() + 1);
-  for (size_t j = 0; j <= y.size(); ++j) row[j] = static_cast<int>(j);
-  for (size_t i = 1; i <= x.size(); ++i) {
-    int diagonal = row[0];
-    row[0] = static_cast<int>(i);
-    for (size_t j = 1; j <= y.size(); ++j) {
-      const int above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (x[i - 1] == y[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[y.size()];
-}
-
 }  // namespace mocapfill::rig_names

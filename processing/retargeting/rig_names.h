@@ -50,7 +50,5 @@ const char* SideWord(Side side);
 // "unreal", "rigify", "smpl", "biovision", or "unknown".
 std::string DetectFamily(const Skeleton& skeleton);
 
-// Levenshtein distance, case-insensitive (suggestions for misspelt joint names).
-int EditDistance(std::string_view a, std::string_view b);
 
 }  // namespace mocapfill::rig_names

@@ -47,7 +47,7 @@ Status ApplyKeyOverrides(const Skeleton& skeleton, const std::vector<std::string
                          const std::vector<std::string>& synthesize, MotionClip& clip) {
   for (const auto* list : {&synthesize, &keep})
     for (const std::string& name : *list)
-      if (!skeleton.Find(name)) return InvalidArgument("joint '" + name + "' is not in the sketch");
+      RETURN_IF_ERROR(FindJointNamed(skeleton, name, list == &keep ? "keep" : "synthesize").status());
   for (int j = 0; j < skeleton.num_joints(); ++j) {
     const std::string& name = skeleton.name(j);
     if (Listed(synthesize, name) || (!keep.empty() && !Listed(keep, name))) clip.keys[j] = JointKeys{};
@@ -58,8 +58,8 @@ Status ApplyKeyOverrides(const Skeleton& skeleton, const std::vector<std::string
 Status CheckTranslationKeys(const Skeleton& skeleton, const MotionClip& clip, int hips,
                             const std::vector<std::string>& position_keys) {
   for (const std::string& name : position_keys) {
-    const std::optional<int> j = skeleton.Find(name);
-    if (!j) return InvalidArgument("position key joint '" + name + "' is not in the sketch");
+    ASSIGN_OR_RETURN(const int joint, FindJointNamed(skeleton, name, "position keys"));
+    const std::optional<int> j = joint;
     if (clip.keys[*j].translation_frames.empty())
       return InvalidArgument("position key joint '" + name + "' has no translation keys in the sketch");
   }

@@ -18,9 +18,8 @@ class FilterNode : public Node {
     if (scene.clips.empty()) return InvalidData("motion: no animation to filter");
     MultiresFilterOptions options = options_;
     for (const std::string& name : joint_names_) {
-      const std::optional<int> joint = scene.skeleton.Find(name);
-      if (!joint) return InvalidData("motion: joint '" + name + "' (option joints) is not in the skeleton");
-      options.joints.push_back(*joint);
+      ASSIGN_OR_RETURN(const int joint, FindJointNamed(scene.skeleton, name, "motion (option joints)", ErrorCode::kInvalidData));
+      options.joints.push_back(joint);
     }
     auto out = std::make_shared<Scene>(scene);
     for (MotionClip& clip : out->clips) {

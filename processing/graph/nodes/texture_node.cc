@@ -92,9 +92,8 @@ class TextureNode : public Node {
   Result<std::vector<int>> Channels(const Skeleton& skeleton, const MotionClip& sketch) const {
     std::vector<int> joints;
     for (const std::string& name : joints_) {
-      const std::optional<int> j = skeleton.Find(name);
-      if (!j) return InvalidData("sketch: joint '" + name + "' (option joints) is not in the skeleton");
-      joints.push_back(*j);
+      ASSIGN_OR_RETURN(const int j, FindJointNamed(skeleton, name, "sketch (option joints)", ErrorCode::kInvalidData));
+      joints.push_back(j);
     }
     if (joints_.empty())
       for (int j = 0; j < skeleton.num_joints(); ++j)
