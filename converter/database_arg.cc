@@ -11,8 +11,9 @@ void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags) {
   command.add_option("--rate", flags.rate_hz, "Working rate of the database in Hz (clips are resampled)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command.add_option("--map", flags.map_path,
-                     "Joint-name map, JSON {\"source name\": \"database name\"}, for clips whose joints are named differently");
+  command.add_option("--map", flags.map,
+                     "Joint-name map, inline JSON or a JSON file {\"source name\": \"database name\"}, for clips whose "
+                     "joints are named differently");
   command.add_option("--threads", flags.threads, "Import/build threads (0 = all cores)")->check(CLI::NonNegativeNumber);
   // --unit and --up as in AddImportFlags; its --rate (keyed-input sampling) is left to
   // detection here, because --rate names the database's working rate.

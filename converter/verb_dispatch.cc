@@ -46,6 +46,8 @@ int RunCommandLine(int argc, char** argv, std::span<const Verb> verbs) {
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "Print only errors")->configurable(false);
   app.require_subcommand(1);
+  // Options a verb does not know go to the top level: `mocapfill convert a.bvh a.glb -q`.
+  app.fallthrough();
   app.footer(
       "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 processing failure, 4 output failure.\n"
       "Run 'mocapfill <command> --help' for the options and examples of a command.");

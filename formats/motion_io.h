@@ -70,6 +70,11 @@ struct ConvertResult {
 ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
                           const ExportOptions& export_options, AtomicWriter* writer = nullptr);
 
+// Every importable file under `paths` (files are taken as given, folders recursively),
+// sorted by path and de-duplicated. Errors: a path that does not exist (kIoError), no
+// importable file found (kInvalidArgument).
+Result<std::vector<std::string>> ListMotionFiles(const std::vector<std::string>& paths);
+
 // True when the extension is one ImportFile reads / ExportFile writes.
 bool IsImportExtension(const std::string& path);
 // True when ImportFile reads the file through Assimp (.fbx, .dae and the other Assimp formats).

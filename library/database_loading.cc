@@ -78,9 +78,11 @@ Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& 
   return map;
 }
 
-Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& path) {
-  ASSIGN_OR_RETURN(const std::string text, ReadFileBytes(path));
-  return ParseJointNameMap(text, path);
+Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& inline_or_path, const std::string& option) {
+  const size_t first = inline_or_path.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && inline_or_path[first] == '{') return ParseJointNameMap(inline_or_path, option);
+  ASSIGN_OR_RETURN(const std::string text, ReadFileBytes(inline_or_path));
+  return ParseJointNameMap(text, inline_or_path);
 }
 
 Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& paths, const DatabaseBuildOptions& options,
@@ -90,8 +92,8 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
   database_options.rate_hz = options.rate_hz;
   database_options.threads = options.threads;
   MotionDatabaseBuilder builder(database_options);
-  if (!options.map_path.empty()) {
-    Result<std::map<std::string, std::string>> map = ReadJointNameMap(options.map_path);
+  if (!options.map.empty()) {
+    Result<std::map<std::string, std::string>> map = ReadJointNameMap(options.map);
     if (!map.ok()) return map.status();
     builder.SetJointNameMap(std::move(map).value());
   }
@@ -106,7 +108,7 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
     const std::string& file = s.labels["file"];
     // A clip of another rig is retargeted onto the first file's rig (through the canonical
     // humanoid), unless a joint-name map was given to make the rigs match by name.
-    if (options.map_path.empty() && &s != &scenes.front() &&
+    if (options.map.empty() && &s != &scenes.front() &&
         !SameJointSet(scenes.front().scene.skeleton, s.scene.skeleton)) {
       Result<Scene> onto = RetargetScene(s.scene, database_rig);
       if (!onto.ok())

@@ -18,7 +18,8 @@ namespace mocapfill {
 // How a database is built from motion files.
 struct DatabaseBuildOptions {
   double rate_hz = 30.0;   // working rate (Hz)
-  std::string map_path;    // JSON object {"source joint": "database joint", ...}; empty = none
+  // Joint-name map: inline JSON {"source joint": "database joint", ...} or a JSON file; empty = none.
+  std::string map;
   int threads = 0;         // import and build threads (0 = all cores)
   ImportOptions import;
 };
@@ -32,9 +33,10 @@ using ImportProgress = std::function<void(size_t done, size_t total)>;
 // non-string values).
 Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& text, const std::string& origin);
 
-// Reads a joint-name map file. Errors name the file (kInvalidData for bad JSON or non-string
-// values, kIoError when unreadable).
-Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& path);
+// A joint-name map given inline (text starting with '{') or as a JSON file. Errors name the
+// file or `option` (kInvalidData for bad JSON or non-string values, kIoError when unreadable).
+Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& inline_or_path,
+                                                            const std::string& option = "--map");
 
 // Imports every motion file under `paths` and builds a database. Clips of another rig than
 // the first file's are retargeted onto it. Errors carry the failing file's path.

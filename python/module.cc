@@ -192,7 +192,7 @@ void BindDatabase(py::module_& m) {
   py::class_<api::Database>(m, "Database", "A motion capture database (.mfdb, motion files/folders, or the default).")
       .def_static(
           "open",
-          [](const std::vector<std::string>& paths, double rate_hz, const std::string& map_path, int threads,
+          [](const std::vector<std::string>& paths, double rate_hz, const std::string& map, int threads,
              const std::string& unit, const std::string& up, const std::function<void(size_t, size_t)>& progress) {
             api::ImportProgress report;
             if (progress) {
@@ -207,9 +207,9 @@ void BindDatabase(py::module_& m) {
               };
             }
             py::gil_scoped_release release;
-            return api::Database::Open(paths, {rate_hz, map_path, threads, unit, up}, report);
+            return api::Database::Open(paths, {rate_hz, map, threads, unit, up}, report);
           },
-          py::arg("paths"), py::arg("rate_hz") = 30.0, py::arg("map_path") = "", py::arg("threads") = 0,
+          py::arg("paths"), py::arg("rate_hz") = 30.0, py::arg("map") = "", py::arg("threads") = 0,
           py::arg("unit") = "auto", py::arg("up") = "auto", py::arg("progress") = nullptr)
       .def("save", &api::Database::Save, py::call_guard<py::gil_scoped_release>(), py::arg("path"))
       .def_property_readonly("name", &api::Database::name)

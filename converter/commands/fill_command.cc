@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -14,6 +15,7 @@
 #include "converter/fill_flags.h"
 #include "converter/import_flags.h"
 #include "converter/option_values.h"
+#include "converter/std_streams.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
@@ -29,6 +31,8 @@ namespace {
 struct FillArgs {
   std::string input, output, report, map, method = "hierarchical", synthesize, keep, pca, rest = "auto";
   std::string position_keys, feet = "plant";
+  std::string from, format = "glb";  // formats of - (standard input / output)
+  bool json = false;
   std::vector<std::string> db;
   ImportOptions import;
   FillOptions fill;
@@ -107,6 +111,23 @@ int RunFill(FillArgs& args) {
     if (rest.ok()) options.rest = *rest;
   }
   if (!flags.ok()) return Fail(flags, Stage::kProcessing);
+  if (args.json && IsStdStream(args.output))
+    return Fail(InvalidArgument("--json and an output on standard output (-) cannot share it"), Stage::kOutput);
+  // "-": standard input spooled to a file, standard output written through one.
+  std::optional<TemporaryFile> stdin_file, stdout_file;
+  if (IsStdStream(args.input)) {
+    Result<TemporaryFile> spooled = SpoolStdin(args.from);
+    if (!spooled.ok()) return Fail(spooled.status(), Stage::kInput);
+    stdin_file.emplace(std::move(spooled).value());
+    args.input = stdin_file->path();
+  }
+  if (IsStdStream(args.output)) {
+    Result<TemporaryFile> temporary = TemporaryFile::Create(args.format);
+    if (!temporary.ok()) return Fail(temporary.status(), Stage::kOutput);
+    stdout_file.emplace(std::move(temporary).value());
+    args.output = stdout_file->path();
+  }
+  const std::string given_input = stdin_file ? "-" : args.input;
   if (!IsExportExtension(args.output))
     return Fail(InvalidArgument(args.output + ": output must end in .gltf, .glb or .bvh"), Stage::kOutput);
   if (IsSameFile(args.input, args.output)) return Fail(IoError(args.output + ": refusing to overwrite the input"), Stage::kOutput);
@@ -119,7 +140,7 @@ int RunFill(FillArgs& args) {
   options.position_keys = SplitList(args.position_keys);
   options.plant_feet = args.feet == "plant";
   Result<Scene> scene = ImportFile(args.input, args.import);
-  if (!scene.ok()) return Fail(scene.status(), Stage::kInput);
+  if (!scene.ok()) return Fail(Status(scene.status().code(), AsGiven(scene.status().message(), args.input)), Stage::kInput);
   if (scene->clips.size() > 1) scene->clips.resize(1);  // the first animation is the sketch
   const auto load_start = std::chrono::steady_clock::now();
   Result<MotionDatabase> db = LoadDatabase(args.db);
@@ -133,19 +154,25 @@ int RunFill(FillArgs& args) {
   Result<SketchFillResult> filled = FillSketch(*scene, *db, options, args.pca.empty() ? nullptr : &*model);
   if (!filled.ok()) {
     const Stage stage = filled.status().code() == ErrorCode::kInvalidData ? Stage::kInput : Stage::kProcessing;
-    return Fail(filled.status().WithContext(args.input), stage);
+    return Fail(filled.status().WithContext(given_input), stage);
   }
-  for (const std::string& w : filled->warnings) PrintWarning(args.input + ": " + w);
+  for (const std::string& w : filled->warnings) PrintWarning(given_input + ": " + w);
   const Status written = ExportFile(filled->scene, args.output);
   if (!written.ok()) return Fail(written, Stage::kOutput);
   const Status measured = MeasureWrittenKeys(args.output, *scene, *filled);
   if (!measured.ok()) return Fail(measured, Stage::kProcessing);
   const std::string db_name = args.db.empty() ? "default" : args.db[0];
+  const std::string report = FillReportJson(*filled, db_name, load_s);
   if (!args.report.empty()) {
-    const Status report = WriteFileAtomic(args.report, FillReportJson(*filled, db_name, load_s) + "\n");
-    if (!report.ok()) return Fail(report, Stage::kOutput);
+    const Status written_report = WriteFileAtomic(args.report, report + "\n");
+    if (!written_report.ok()) return Fail(written_report, Stage::kOutput);
   }
   PrintSummary(*filled);
+  if (args.json) std::printf("%s\n", report.c_str());
+  if (stdout_file) {
+    const Status copied = CopyToStdout(stdout_file->path());
+    if (!copied.ok()) return Fail(copied, Stage::kOutput);
+  }
   return kExitOk;
 }
 
@@ -154,9 +181,17 @@ int RunFill(FillArgs& args) {
 void AddFillCommand(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<FillArgs>();
   CLI::App* command = app.add_subcommand("fill", "Fill the missing joints of a keyframed sketch from a motion database");
-  command->add_option("input", args->input, "Sketch (.bvh .gltf .glb .fbx): joints with a channel are keyed")
+  command->add_option("input", args->input,
+                      "Sketch (.bvh .gltf .glb .fbx; - for standard input, with --from): joints with a channel are keyed")
       ->required();
-  command->add_option("-o,--output", args->output, "Output file (.glb .gltf .bvh)")->required();
+  command->add_option("-o,--output", args->output, "Output file (.glb .gltf .bvh; - for standard output, in --format)")
+      ->required();
+  command->add_option("--from", args->from, "Format of a - input (standard input): bvh, gltf, glb or fbx")
+      ->check(CLI::IsMember({"bvh", "gltf", "glb", "fbx"}));
+  command->add_option("--format", args->format, "Format of a - output (standard output): glb, gltf or bvh")
+      ->check(CLI::IsMember({"glb", "gltf", "bvh"}))
+      ->capture_default_str();
+  command->add_flag("--json", args->json, "Print the report (as --report writes it) on standard output");
   command->add_option("--db", args->db, "Database: an .mfdb file or motion files/folders (default: embedded)");
   command->add_option("--method", args->method, "hierarchical, fragment, nn, mean, pca or hybrid")
       ->check(CLI::IsMember({"hierarchical", "fragment", "nn", "mean", "pca", "hybrid"}))
@@ -186,6 +221,8 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
   command->footer(
       "Examples:\n"
       "  mocapfill fill sketch.glb -o enriched.glb --report fill.json\n"
+      "  mocapfill fill sketch.glb -o enriched.glb --json | jq .key_error_max_deg\n"
+      "  cat sketch.bvh | mocapfill fill - --from bvh -o - --format glb > enriched.glb\n"
       "  mocapfill fill baked.bvh -o out.glb --keep Hips,UpperLeg_L,LowerLeg_L,Foot_L,UpperLeg_R,LowerLeg_R,Foot_R\n"
       "  mocapfill fill sketch.glb -o out.glb --db ../shared/data/bandai-namco-1/data --method fragment\n"
       "  mocapfill fill sketch.glb -o out.glb --method hybrid --pca walk.pca --report fill.json\n"

@@ -19,7 +19,7 @@ namespace {
 struct RunArgs {
   std::string pipeline, report;
   std::vector<std::string> sets;
-  bool dry_run = false, list_nodes = false;
+  bool dry_run = false, list_nodes = false, json = false;
 };
 
 // Multi-line validation messages get the pipeline file on every line.
@@ -54,9 +54,10 @@ int RunPipeline(const RunArgs& args) {
   }
   for (const graph::NodeRun& node : run.nodes)
     for (const std::string& w : node.warnings) PrintWarning(graph::NodeLabel(node.id, node.type) + ": " + w);
+  const std::string report = RunReportJson(*file, run);
   if (!args.report.empty())
-    if (Status written = WriteFileAtomic(args.report, RunReportJson(*file, run)); !written.ok())
-      return Fail("", written, Stage::kOutput);
+    if (Status written = WriteFileAtomic(args.report, report); !written.ok()) return Fail("", written, Stage::kOutput);
+  if (args.json) std::fputs(report.c_str(), stdout);
   if (!run.status.ok())
     return Fail(args.pipeline, run.status, StageOf(graph->plan()[run.failed_node].spec->role));
   if (!IsQuiet()) {
@@ -75,7 +76,9 @@ void AddRunCommand(CLI::App& app, CommandAction& action) {
   command->add_option("pipeline", args->pipeline, "Pipeline file (.json); relative paths in it are relative to its folder");
   command->add_option("--set", args->sets, "Override an option: node.option=value (JSON or plain text); repeatable");
   command->add_flag("--dry-run", args->dry_run, "Validate the pipeline and print the plan; run nothing");
-  command->add_option("--report", args->report, "Write per-node timings and warnings as JSON");
+  command->add_option("--report", args->report,
+                      "Write per-node timings and warnings as JSON, with each fill node's report (as fill --report)");
+  command->add_flag("--json", args->json, "Print that JSON report on standard output");
   command->add_flag("--list-nodes", args->list_nodes, "Print every node type with its ports and options");
   command->footer(
       "Examples:\n"

@@ -112,7 +112,7 @@ Result<std::unique_ptr<Node>> CreateDatabase(const NodeOptions& o) {
   flags.threads = o.Int("threads");
   flags.import.unit = o.String("unit");
   flags.import.up = o.String("up");
-  if (o.Has("map")) flags.map_path = o.String("map");
+  if (o.Has("map")) flags.map = o.String("map");
   return std::unique_ptr<Node>(new DatabaseNode(o.String("path"), flags));
 }
 

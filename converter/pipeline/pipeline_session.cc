@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "formats/file_io.h"
+#include "library/fill_report_json.h"
 
 namespace mocapfill::cli {
 
@@ -97,8 +98,15 @@ std::string RunReportJson(const PipelineFile& file, const graph::GraphRun& run) 
   if (!run.status.ok()) json["error"] = run.status.message();
   json["total_seconds"] = run.total_seconds;
   nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
-  for (const graph::NodeRun& node : run.nodes)
+  for (const graph::NodeRun& node : run.nodes) {
     nodes.push_back({{"id", node.id}, {"type", node.type}, {"seconds", node.seconds}, {"warnings", node.warnings}});
+    // A fill node's report, as `fill --report` writes it; its key errors are measured on the
+    // filled clip in memory, before an output node writes it.
+    if (node.fill) {
+      nodes.back()["report"] = nlohmann::ordered_json::parse(FillReportJson(*node.fill, "input \"database\"", 0.0));
+      nodes.back()["report_key_errors_measured"] = "on the filled clip in memory, before it is written";
+    }
+  }
   json["nodes"] = nodes;
   return json.dump(2) + "\n";
 }

@@ -14,11 +14,6 @@
 
 namespace mocapfill {
 
-// Every importable file under `paths` (files are taken as given, folders recursively),
-// sorted by path and de-duplicated. Errors: a path that does not exist (kIoError), no
-// importable file found (kInvalidArgument).
-Result<std::vector<std::string>> ListMotionFiles(const std::vector<std::string>& paths);
-
 // Labels of one file:
 //  - "file": the path; "name": the file stem.
 //  - File names "<prefix>_<content>_<style>_<id>" with a numeric id (Bandai-Namco

@@ -14,7 +14,7 @@ namespace mocapfill::api {
 
 struct DatabaseOptions {
   double rate_hz = 30.0;      // working rate when building (clips are resampled)
-  std::string map_path;       // joint-name map JSON {"source": "database joint"} for other namings
+  std::string map;            // joint-name map, inline JSON {"source": "database joint"} or a JSON file
   int threads = 0;            // import and build threads (0 = every core)
   std::string unit = "auto";  // length unit of the motion files
   std::string up = "auto";    // up axis of the motion files

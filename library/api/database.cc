@@ -17,7 +17,7 @@ Database Database::Open(const std::vector<std::string>& paths, const DatabaseOpt
                         const ImportProgress& progress) {
   DatabaseBuildOptions build;
   build.rate_hz = options.rate_hz;
-  build.map_path = options.map_path;
+  build.map = options.map;
   build.threads = options.threads;
   build.import.unit = options.unit;
   build.import.up = options.up;

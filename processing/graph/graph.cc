@@ -254,7 +254,7 @@ GraphRun Graph::Run(const std::function<void(const PlannedNode&)>& on_node_done)
     const auto node_start = Clock::now();
     Result<Value> output = planned.node->Run(inputs, context);
     run.nodes.push_back({planned.id, planned.spec->type, std::chrono::duration<double>(Clock::now() - node_start).count(),
-                         std::move(context.warnings)});
+                         std::move(context.warnings), std::move(context.fill)});
     if (!output.ok()) {
       run.status = output.status().WithContext(NodeLabel(planned.id, planned.spec->type));
       run.failed_node = static_cast<int>(i);

@@ -46,6 +46,7 @@ struct NodeRun {
   std::string type;
   double seconds = 0.0;
   std::vector<std::string> warnings;
+  std::shared_ptr<const SketchFillResult> fill;  // a fill node's result (RunContext::fill)
 };
 
 struct GraphRun {

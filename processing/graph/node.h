@@ -18,6 +18,10 @@
 #include "processing/database/motion_database.h"
 #include "processing/graph/option_value.h"
 
+namespace mocapfill {
+struct SketchFillResult;  // processing/sketch_fill/sketch_fill.h
+}  // namespace mocapfill
+
 namespace mocapfill::graph {
 
 // What flows along an edge. A motion is a Scene (skeleton, clips, meshes and skins kept so
@@ -110,6 +114,8 @@ class NodeInputs {
 // Warnings a node reports (the CLI prints them; library code never prints).
 struct RunContext {
   std::vector<std::string> warnings;
+  // A fill node's whole result (joints, key errors, fragments, coverage), for run reports.
+  std::shared_ptr<const SketchFillResult> fill;
 };
 
 // A configured node: immutable once built from validated options; Run is deterministic.

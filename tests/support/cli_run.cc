@@ -19,9 +19,11 @@ extern char** environ;
 
 namespace mocapfill::testing {
 
-RunResult RunCli(const std::string& args) {
+namespace {
+
+RunResult RunShell(const std::string& command) {
   RunResult result;
-  FILE* pipe = popen((MocapfillExe() + " " + args + " 2>&1").c_str(), "r");
+  FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   size_t n;
@@ -29,6 +31,14 @@ RunResult RunCli(const std::string& args) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+}  // namespace
+
+RunResult RunCli(const std::string& args) { return RunShell(MocapfillExe() + " " + args + " 2>&1"); }
+
+RunResult RunCliStdout(const std::string& args, const std::string& stderr_file) {
+  return RunShell(MocapfillExe() + " " + args + " 2>" + (stderr_file.empty() ? "/dev/null" : "'" + stderr_file + "'"));
 }
 
 pid_t StartCli(const std::vector<std::string>& args, const std::string& log) {

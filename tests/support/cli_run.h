@@ -16,6 +16,10 @@ struct RunResult {
 // Runs `mocapfill <args>` through the shell (args are shell words) and captures its output.
 RunResult RunCli(const std::string& args);
 
+// As RunCli, capturing standard output alone (JSON, piped files); stderr goes to
+// `stderr_file`, or is discarded when "".
+RunResult RunCliStdout(const std::string& args, const std::string& stderr_file = "");
+
 // Starts `mocapfill args...` directly (no shell), its stdout and stderr into `log` (or
 // discarded when ""), and returns without waiting: its pid, -1 when it could not start.
 pid_t StartCli(const std::vector<std::string>& args, const std::string& log = "");

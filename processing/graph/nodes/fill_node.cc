@@ -26,7 +26,9 @@ class FillNode : public Node {
     Result<SketchFillResult> filled = FillSketch(sketch, db, options_, model);
     if (!filled.ok()) return filled.status().WithContext("sketch");
     for (const std::string& w : filled->warnings) context.warnings.push_back("sketch: " + w);
-    return WithClip(scene, std::move(filled->scene.clips.front()));
+    MotionClip clip = filled->scene.clips.front();
+    context.fill = std::make_shared<const SketchFillResult>(std::move(filled).value());
+    return WithClip(scene, std::move(clip));
   }
 
  private:
