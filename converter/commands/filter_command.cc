@@ -1,5 +1,7 @@
 // mocapfill filter: multiresolution filtering (Bruderlin-Williams band gains) of a motion
-// file, written through the exporters (validator-clean glTF, or BVH).
+// file, written through the exporters (validator-clean glTF, or BVH). The verb runs the
+// pipeline's filter node, and its flags are generated from that node's option schema, so
+// the two accept the same options with the same ranges.
 #include <cstdio>
 #include <filesystem>
 
@@ -8,9 +10,11 @@
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
 #include "converter/import_flags.h"
+#include "converter/node_flags.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
-#include "processing/filtering/motion_filter.h"
+#include "processing/filtering/pyramid.h"
+#include "processing/graph/nodes/nodes.h"
 
 namespace mocapfill::cli {
 
@@ -21,39 +25,33 @@ namespace fs = std::filesystem;
 struct FilterArgs {
   std::string input;
   std::string output;
-  std::vector<double> gains;
-  std::vector<std::string> joints;
-  int levels = 0;
-  double residual_gain = 1.0;
-  bool periodic = false;
   std::string db;
   ImportOptions import;
-  ExportOptions export_options;
+  NodeFlags flags;  // the filter node's options
 };
 
-// The database's joint means re-indexed for the clip's skeleton, so filtering happens about
-// the database's reference. Fails naming a joint the database lacks.
-Result<TangentReference> ReferenceFor(const Skeleton& skeleton, const MotionDatabase& db) {
-  TangentReference reference;
-  for (int j = 0; j < skeleton.num_joints(); ++j) {
-    const std::optional<int> d = db.skeleton().Find(skeleton.name(j));
-    if (!d) return InvalidData("joint '" + skeleton.name(j) + "' is not in the database skeleton");
-    reference.joint_means.push_back(db.joint_means()[*d]);
-    if (*d == db.root_joint()) reference.root_joint = j;
+// "filtered 'walk': 40 frames, 5 levels: L0 15Hz x1 ...": what each band was scaled by.
+void PrintBands(const MotionClip& clip, const graph::NodeOptions& options) {
+  if (IsQuiet()) return;
+  const std::vector<double> gains = options.NumberList("gains");
+  const int levels = options.Int("levels") > 0 ? options.Int("levels") : AutomaticLevels(clip.num_frames, clip.sample_rate_hz);
+  std::string bands;
+  char buffer[64];
+  for (int k = 0; k < levels; ++k) {
+    const double g = k < static_cast<int>(gains.size()) ? gains[k] : 1.0;
+    std::snprintf(buffer, sizeof(buffer), " L%d %.2gHz x%g", k, BandPeakHz(k, clip.sample_rate_hz), g);
+    bands += buffer;
   }
-  return reference;
-}
-
-Result<std::vector<int>> JointIndices(const Skeleton& skeleton, const std::vector<std::string>& names) {
-  std::vector<int> indices;
-  for (const std::string& name : names) {
-    ASSIGN_OR_RETURN(const int j, FindJointNamed(skeleton, name, "--joints"));
-    indices.push_back(j);
-  }
-  return indices;
+  std::printf("filtered '%s': %d frames, %d levels:%s, residual x%g\n", clip.name.c_str(), clip.num_frames, levels,
+              bands.c_str(), options.Number("residual_gain"));
 }
 
 int RunFilter(const FilterArgs& args) {
+  const graph::NodeTypeSpec spec = graph::FilterNodeSpec();
+  Result<graph::NodeOptions> options = NodeOptionsFromFlags(spec, args.flags);
+  if (!options.ok()) return Fail(options.status(), Stage::kProcessing);
+  Result<std::unique_ptr<graph::Node>> node = spec.create(*options);
+  if (!node.ok()) return Fail(node.status(), Stage::kProcessing);
   if (!IsExportExtension(args.output)) return Fail(InvalidArgument(args.output + ": output must end in .gltf, .glb or .bvh"), Stage::kOutput);
   if (IsSameFile(args.input, args.output) ||
       fs::path(args.input).lexically_normal() == fs::path(args.output).lexically_normal())
@@ -63,42 +61,20 @@ int RunFilter(const FilterArgs& args) {
   for (const std::string& warning : scene->warnings) PrintWarning(args.input + ": " + warning);
   if (scene->clips.empty()) return Fail(InvalidData(args.input + ": no animation to filter"), Stage::kInput);
 
-  MultiresFilterOptions options;
-  options.gains.band_gains = args.gains;
-  options.gains.residual_gain = args.residual_gain;
-  options.pyramid.levels = args.levels;
-  options.pyramid.boundary = args.periodic ? PyramidBoundary::kPeriodic : PyramidBoundary::kClamp;
-  Result<std::vector<int>> joints = JointIndices(scene->skeleton, args.joints);
-  if (!joints.ok()) return Fail(joints.status(), Stage::kInput);
-  options.joints = *joints;
-  TangentReference reference;
+  graph::NodeInputs inputs;
+  inputs.Set("motion", graph::Value(std::make_shared<const Scene>(std::move(scene).value())));
   if (!args.db.empty()) {
     Result<MotionDatabase> db = LoadDatabaseArg(args.db);
     if (!db.ok()) return Fail(db.status(), Stage::kInput);
-    Result<TangentReference> mapped = ReferenceFor(scene->skeleton, *db);
-    if (!mapped.ok()) return Fail(mapped.status().WithContext(args.input), Stage::kInput);
-    reference = std::move(mapped).value();
-    options.reference = &reference;
+    inputs.Set("database", graph::Value(std::make_shared<const MotionDatabase>(std::move(db).value())));
   }
-  for (MotionClip& clip : scene->clips) {
-    Result<MotionClip> filtered = MultiresFilter(scene->skeleton, clip, options);
-    if (!filtered.ok()) return Fail(filtered.status().WithContext(args.input + ": clip '" + clip.name + "'"), Stage::kProcessing);
-    if (!IsQuiet()) {
-      const int levels = options.pyramid.levels > 0 ? options.pyramid.levels
-                                                    : AutomaticLevels(clip.num_frames, clip.sample_rate_hz);
-      std::string bands;
-      char buffer[64];
-      for (int k = 0; k < levels; ++k) {
-        const double g = k < static_cast<int>(args.gains.size()) ? args.gains[k] : 1.0;
-        std::snprintf(buffer, sizeof(buffer), " L%d %.2gHz x%g", k, BandPeakHz(k, clip.sample_rate_hz), g);
-        bands += buffer;
-      }
-      std::printf("filtered '%s': %d frames, %d levels:%s, residual x%g\n", clip.name.c_str(), clip.num_frames,
-                  levels, bands.c_str(), args.residual_gain);
-    }
-    clip = std::move(filtered).value();
-  }
-  const Status written = ExportFile(*scene, args.output, args.export_options);
+  graph::RunContext context;
+  Result<graph::Value> filtered = (*node)->Run(inputs, context);
+  for (const std::string& warning : context.warnings) PrintWarning(args.input + ": " + warning);
+  if (!filtered.ok()) return Fail(filtered.status().WithContext(args.input), Stage::kInput);
+  const Scene& out = *std::get<std::shared_ptr<const Scene>>(*filtered);
+  for (const MotionClip& clip : out.clips) PrintBands(clip, *options);
+  const Status written = ExportFile(out, args.output);
   if (!written.ok()) return Fail(written, Stage::kOutput);
   return kExitOk;
 }
@@ -111,23 +87,16 @@ void AddFilterCommand(CLI::App& app, CommandAction& action) {
       "filter", "Multiresolution filtering: scale frequency bands of the motion (Bruderlin-Williams)");
   command->add_option("input", args->input, "Input motion file (.bvh .gltf .glb .fbx)")->required();
   command->add_option("-o,--output", args->output, "Output file (.glb .gltf .bvh)")->required();
-  command->add_option("--gains", args->gains,
-                      "Gains of the band-pass levels L0 (highest, ~15 Hz at 30 Hz), L1, ... comma-separated; "
-                      "missing ones are 1")
-      ->delimiter(',');
-  command->add_option("--joints", args->joints, "Joints to filter, comma-separated (default: all; the motion root "
-                                               "filters height, velocity and turning)")
-      ->delimiter(',');
-  command->add_option("--levels", args->levels, "Band-pass levels (default: floor(log2 frames), lowest band >= 0.1 Hz)")
-      ->check(CLI::Range(0, 16));
-  command->add_option("--residual-gain", args->residual_gain, "Gain of the residual low-pass (average pose and speed)");
-  command->add_flag("--periodic", args->periodic, "Treat the clip as cyclic (wrap around instead of holding the ends)");
-  command->add_option("--db", args->db, "Filter about this database's joint means (.mfdb file or motion folder)");
+  AddNodeFlags(*command, graph::FilterNodeSpec(), args->flags);
+  command->add_option("--db", args->db, "Filter about this database's joint means (.mfdb file, motion folder or default)");
   AddImportFlags(*command, args->import);
   command->footer(
       "Examples:\n"
       "  mocapfill filter walk.bvh -o lively.glb --gains 1,1,1.5,1.5,1,1\n"
-      "  mocapfill filter walk.bvh -o arms.glb --gains 1,1,2 --joints UpperArm_L,LowerArm_L");
+      "  mocapfill filter walk.bvh -o arms.glb --gains 1,1,2 --joints UpperArm_L,LowerArm_L\n"
+      "\n"
+      "The options are those of the pipeline's filter node (mocapfill run --list-nodes): gains per band,\n"
+      "L0 the highest (about 15 Hz at 30 Hz), missing gains 1; levels 0 = floor(log2 frames), lowest band >= 0.1 Hz.");
   command->callback([args, &action] { action = [args] { return RunFilter(*args); }; });
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <sstream>
 
 namespace mocapfill::graph {
 
@@ -47,41 +48,14 @@ std::string NameList(const std::vector<std::string>& names) {
 
 // Given options checked against the specs, plus defaults; false when any was wrong.
 bool CheckOptions(const NodeConfig& node, const NodeTypeSpec& spec, Problems& problems, NodeOptions& out) {
-  std::map<std::string, OptionValue> values;
-  std::vector<std::string> names;
-  for (const OptionSpec& option : spec.options) names.push_back(option.name);
-  bool ok = true;
-  std::set<std::string> given;
-  for (const auto& [name, value] : node.options) {
-    given.insert(name);
-    const OptionSpec* option = nullptr;
-    for (const OptionSpec& o : spec.options)
-      if (o.name == name) option = &o;
-    if (!option) {
-      problems.Add(node, "option \"" + name + "\": unknown option (" + spec.type + " has: " +
-                             (names.empty() ? std::string("no options") : NameList(names)) + ")");
-      ok = false;
-    } else if (values.count(name)) {  // a reader that allows duplicate keys
-      problems.Add(node, "option \"" + name + "\": given twice");
-      ok = false;
-    } else if (Status s = CheckOption(*option, value); !s.ok()) {
-      problems.Add(node, "option \"" + name + "\": " + s.message());
-      ok = false;
-    } else {
-      values[name] = value;
-    }
+  Result<NodeOptions> checked = CheckNodeOptions(spec, node.options);
+  if (checked.ok()) {
+    out = std::move(checked).value();
+    return true;
   }
-  for (const OptionSpec& option : spec.options) {
-    if (given.count(option.name)) continue;
-    if (option.required) {
-      problems.Add(node, "option \"" + option.name + "\": required (" + option.doc + ")");
-      ok = false;
-    } else {
-      values[option.name] = option.default_value;
-    }
-  }
-  out = NodeOptions(std::move(values));
-  return ok;
+  std::istringstream lines(checked.status().message());
+  for (std::string line; std::getline(lines, line);) problems.Add(node, line);
+  return false;
 }
 
 struct Checked {
@@ -267,6 +241,44 @@ GraphRun Graph::Run(const std::function<void(const PlannedNode&)>& on_node_done)
   }
   run.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return run;
+}
+
+Result<NodeOptions> CheckNodeOptions(const NodeTypeSpec& spec,
+                                     const std::vector<std::pair<std::string, OptionValue>>& given,
+                                     const std::function<std::string(const std::string&)>& label) {
+  const auto name_of = [&](const std::string& name) { return label ? label(name) : "option \"" + name + "\""; };
+  std::map<std::string, OptionValue> values;
+  std::vector<std::string> names, problems;
+  for (const OptionSpec& option : spec.options) names.push_back(option.name);
+  std::set<std::string> seen;
+  for (const auto& [name, value] : given) {
+    const OptionSpec* option = nullptr;
+    for (const OptionSpec& o : spec.options)
+      if (o.name == name) option = &o;
+    if (!option) {
+      problems.push_back(name_of(name) + ": unknown option (" + spec.type + " has: " +
+                         (names.empty() ? std::string("no options") : NameList(names)) + ")");
+    } else if (!seen.insert(name).second) {  // a reader that allows duplicate keys
+      problems.push_back(name_of(name) + ": given twice");
+    } else if (Status s = CheckOption(*option, value); !s.ok()) {
+      problems.push_back(name_of(name) + ": " + s.message());
+    } else {
+      values[name] = value;
+    }
+  }
+  for (const OptionSpec& option : spec.options) {
+    if (seen.count(option.name)) continue;
+    if (option.required)
+      problems.push_back(name_of(option.name) + ": required (" + option.doc + ")");
+    else
+      values[option.name] = option.default_value;
+  }
+  if (!problems.empty()) {
+    std::string message;
+    for (const std::string& p : problems) message += (message.empty() ? "" : "\n") + p;
+    return InvalidArgument(message);
+  }
+  return NodeOptions(std::move(values));
 }
 
 }  // namespace mocapfill::graph

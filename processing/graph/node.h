@@ -126,6 +126,15 @@ class Node {
   virtual Result<Value> Run(const NodeInputs& inputs, RunContext& context) const = 0;
 };
 
+// A node's options checked against its type's schema, defaults added: what a pipeline file's
+// node and a command-line verb generated from the same schema (converter/node_flags.h) both
+// go through. `given` in the order given; every problem is reported, one per line, each
+// starting with `label(option name)` (default: `option "name"`). kInvalidArgument.
+struct NodeTypeSpec;
+Result<NodeOptions> CheckNodeOptions(const NodeTypeSpec& spec,
+                                     const std::vector<std::pair<std::string, OptionValue>>& given,
+                                     const std::function<std::string(const std::string&)>& label = {});
+
 // Where a node's failures belong, so the CLI can map I/O errors to input or output exit codes.
 enum class NodeRole { kSource, kProcess, kSink };
 

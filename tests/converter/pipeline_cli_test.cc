@@ -241,7 +241,7 @@ TEST(PipelineRun, RejectsUnknownNodeType) {
 
 TEST(PipelineRun, RejectsUnknownOption) {
   ExpectRejected(Write("option", [](nlohmann::json& j) { j["nodes"][1]["options"]["gain"] = 2; }), 1,
-                 "node \"eq\" (filter): option \"gain\": unknown option (filter has: gains, residual_gain, joints, levels)");
+                 "node \"eq\" (filter): option \"gain\": unknown option (filter has: gains, residual_gain, joints, levels, periodic)");
 }
 
 TEST(PipelineRun, RejectsWrongOptionType) {
