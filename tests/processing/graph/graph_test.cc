@@ -148,7 +148,7 @@ TEST(GraphBuild, RejectsUnknownNodeType) {
 
 TEST(GraphBuild, RejectsUnknownOptionListingTheKnownOnes) {
   const std::string m = BuildError(WalkFilterSink({{"gain", V::Array({V::Integer(2)})}}));
-  EXPECT_EQ(m, "node \"eq\" (filter): option \"gain\": unknown option (filter has: gains, residual_gain, joints, levels)");
+  EXPECT_EQ(m, "node \"eq\" (filter): option \"gain\": unknown option (filter has: gains, residual_gain, joints, levels, periodic)");
 }
 
 TEST(GraphBuild, RejectsWrongOptionType) {
@@ -194,7 +194,7 @@ TEST(GraphBuild, RejectsInputNamingAnUnknownNode) {
 TEST(GraphBuild, RejectsUnknownInputPort) {
   GraphConfig config = WalkFilterSink();
   config.nodes[1].inputs.push_back({"clip", "walk"});
-  EXPECT_EQ(BuildError(config), "node \"eq\" (filter): input \"clip\": unknown port (filter has: motion)");
+  EXPECT_EQ(BuildError(config), "node \"eq\" (filter): input \"clip\": unknown port (filter has: motion, database)");
 }
 
 TEST(GraphBuild, RejectsWrongPortType) {
