@@ -7,6 +7,7 @@
 #include "converter/console.h"
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
+#include "converter/export_flags.h"
 #include "converter/import_flags.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
@@ -125,6 +126,7 @@ void AddFilterCommand(CLI::App& app, CommandAction& action) {
   command->add_flag("--periodic", args->periodic, "Treat the clip as cyclic (wrap around instead of holding the ends)");
   command->add_option("--db", args->db, "Filter about this database's joint means (.mfdb file or motion folder)");
   AddImportFlags(*command, args->import);
+  AddExportFlags(*command, args->export_options);
   command->footer(
       "Examples:\n"
       "  mocapfill filter walk.bvh -o lively.glb --gains 1,1,1.5,1.5,1,1\n"
