@@ -26,9 +26,11 @@
   struct StreamedGlb {                                                                              \
     std::string head;                                                                               \
     LargeBuffer tracks;                                                                             \
+    std::vector<unsigned char> tail;                                                                \
   };                                                                                                \
   std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path,         \
-                                            const ImportOptions& options);                          \
+                                            const ImportOptions& options,                           \
+                                            const ExportOptions& export_options = {});              \
   }
 MOCAPFILL_DECLARE_STREAM(bvh_glb_a)
 MOCAPFILL_DECLARE_STREAM(bvh_glb_x)

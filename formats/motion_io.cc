@@ -32,6 +32,19 @@ bool IsAssimpExtension(const std::string& ext) {
 
 }  // namespace
 
+std::optional<GltfSkeleton> ParseGltfSkeleton(const std::string& name) {
+  if (name == "nodes") return GltfSkeleton::kNodes;
+  if (name == "skin") return GltfSkeleton::kSkin;
+  if (name == "mesh") return GltfSkeleton::kSkinAndMesh;
+  return std::nullopt;
+}
+
+std::optional<BvhLayout> ParseBvhLayout(const std::string& name) {
+  if (name == "source") return BvhLayout::kSource;
+  if (name == "standard") return BvhLayout::kStandard;
+  return std::nullopt;
+}
+
 bool IsAssimpInput(const std::string& path) { return IsAssimpExtension(LowerExtension(path)); }
 
 bool IsImportExtension(const std::string& path) {
@@ -93,10 +106,11 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
       result.status = text.status();
       return result;
     }
-    std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options);
+    std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options, export_options);
     // A file truncated while mapped goes the clip path, which reads it again.
     if (glb && text->intact()) {
-      result.status = WriteOut(writer, output, {glb->head, glb->tracks.view()});
+      const std::string_view tail(reinterpret_cast<const char*>(glb->tail.data()), glb->tail.size());
+      result.status = WriteOut(writer, output, {glb->head, glb->tracks.view(), tail});
       result.failed_writing = !result.status.ok();
       if (import_options.leave_input_to_exit) text->LeaveToExit();
       return result;

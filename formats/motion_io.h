@@ -2,6 +2,7 @@
 // the tests need; each format lives in its own folder behind these two functions.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,12 +40,35 @@ struct ImportOptions {
   bool leave_input_to_exit = false;
 };
 
+// glTF output for a scene without a skinned mesh of its own (a BVH, or bare animated nodes).
+// Importers of game engines and Blender build a skeleton only from a skin.
+enum class GltfSkeleton {
+  kNodes,         // the joints as plain animated nodes (no skin)
+  kSkin,          // plus a skin over every joint, bound in the rest pose
+  kSkinAndMesh,   // plus a stick-figure mesh bound to that skin, so the skeleton shows
+};
+
+// BVH output layout.
+enum class BvhLayout {
+  kSource,    // each joint's channels as the source had them (exact re-export)
+  // Three rotation channels on every joint; position channels (XYZ, with a zero OFFSET)
+  // only on joints whose translation moves. Readers that add position channels to the
+  // OFFSET and readers that replace it then read the same motion.
+  kStandard,
+};
+
 struct ExportOptions {
   // BVH output unit: "auto" writes in the source's unit (recorded on import), else as ImportOptions::unit.
   std::string unit = "auto";
   // glTF: pretty-print the JSON of .gltf output.
   bool pretty = true;
+  GltfSkeleton gltf_skeleton = GltfSkeleton::kSkin;
+  BvhLayout bvh_layout = BvhLayout::kSource;
 };
+
+// Parses "nodes" / "skin" / "mesh" and "source" / "standard" (the CLI and pipeline spellings).
+std::optional<GltfSkeleton> ParseGltfSkeleton(const std::string& name);
+std::optional<BvhLayout> ParseBvhLayout(const std::string& name);
 
 // Reads any supported file: .bvh, .gltf, .glb, and (through Assimp) .fbx and other
 // Assimp formats. Errors name the file and the line or field.

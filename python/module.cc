@@ -175,17 +175,22 @@ void BindIo(py::module_& m) {
       py::arg("animation") = "", py::arg("strict") = false, "Reads .bvh, .gltf, .glb, .fbx (and Assimp's formats).");
   m.def(
       "save",
-      [](const api::Scene& scene, const std::string& path, const std::string& unit, bool pretty) {
-        api::Save(scene, path, {unit, pretty});
+      [](const api::Scene& scene, const std::string& path, const std::string& unit, bool pretty,
+         const std::string& gltf_skeleton, const std::string& bvh_layout) {
+        api::Save(scene, path, {unit, pretty, gltf_skeleton, bvh_layout});
       },
       release, py::arg("scene"), py::arg("path"), py::arg("unit") = "auto", py::arg("pretty") = true,
-      "Writes .gltf, .glb or .bvh by the extension; atomic.");
+      py::arg("gltf_skeleton") = "skin", py::arg("bvh_layout") = "source",
+      "Writes .gltf, .glb or .bvh by the extension; atomic. gltf_skeleton: skin, mesh or nodes; "
+      "bvh_layout: source or standard.");
   m.def(
       "convert",
-      [](const std::string& input, const std::string& output, const std::string& unit, const std::string& up) {
-        api::Convert(input, output, {unit, up, 0.0, "", false}, {});
+      [](const std::string& input, const std::string& output, const std::string& unit, const std::string& up,
+         const std::string& gltf_skeleton, const std::string& bvh_layout) {
+        api::Convert(input, output, {unit, up, 0.0, "", false}, {"auto", true, gltf_skeleton, bvh_layout});
       },
-      release, py::arg("input"), py::arg("output"), py::arg("unit") = "auto", py::arg("up") = "auto");
+      release, py::arg("input"), py::arg("output"), py::arg("unit") = "auto", py::arg("up") = "auto",
+      py::arg("gltf_skeleton") = "skin", py::arg("bvh_layout") = "source");
 }
 
 void BindDatabase(py::module_& m) {

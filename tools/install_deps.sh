@@ -28,8 +28,9 @@ if ((${#missing[@]})); then
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-# The Khronos glTF-Validator (npm package, pinned in tools/package.json) checks every glTF the tests write.
+# The npm packages pinned in tools/package.json: the Khronos glTF-Validator checks every glTF
+# the tests write; three.js's BVHLoader reads the BVH they write (tests/clients).
 here=$(cd "$(dirname "$0")" && pwd)
-if [ -f "$here/package.json" ] && [ ! -d "$here/node_modules/gltf-validator" ]; then
+if [ -f "$here/package.json" ] && { [ ! -d "$here/node_modules/gltf-validator" ] || [ ! -d "$here/node_modules/three" ]; }; then
   npm install --prefix "$here" --no-audit --no-fund --silent >/dev/null
 fi

@@ -19,6 +19,7 @@
 #include "converter/commands.h"
 #include "converter/console.h"
 #include "converter/exit_codes.h"
+#include "converter/export_flags.h"
 #include "converter/import_flags.h"
 #include "converter/std_streams.h"
 #include "formats/atomic_writer.h"
@@ -330,6 +331,7 @@ void AddConvertCommand(CLI::App& app, CommandAction& action) {
       ->check(CLI::IsMember({"bvh", "gltf", "glb", "fbx"}));
   command->add_flag("--json", args->json, "Print a JSON summary (every file, its output, error and warnings) on stdout");
   AddImportFlags(*command, args->import);
+  AddExportFlags(*command, args->export_options);
   command->footer(
       "Examples:\n"
       "  mocapfill convert walk.bvh walk.glb\n"
@@ -339,7 +341,9 @@ void AddConvertCommand(CLI::App& app, CommandAction& action) {
       "  mocapfill convert clips/*.bvh -o out/            # batch, all cores\n"
       "  mocapfill convert mocap.bvh mocap.glb --unit cmu  # CMU units\n"
       "  mocapfill convert rig.fbx rig.gltf --animation Take1\n"
-      "  mocapfill convert walk.glb walk.bvh");
+      "  mocapfill convert walk.glb walk.bvh\n"
+      "  mocapfill convert walk.bvh walk.glb --skeleton-mesh   # shows as an armature in Blender\n"
+      "  mocapfill convert walk.glb walk.bvh --bvh-layout standard   # for three.js and other readers");
   command->callback([args, &action] {
     // Without -o, the last positional is the output file: convert IN OUT.
     if (args->output_dir.empty() && args->inputs.size() >= 2) {

@@ -12,6 +12,7 @@
 #include "converter/console.h"
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
+#include "converter/export_flags.h"
 #include "converter/fill_flags.h"
 #include "converter/import_flags.h"
 #include "converter/option_values.h"
@@ -35,6 +36,7 @@ struct FillArgs {
   bool json = false;
   std::vector<std::string> db;
   ImportOptions import;
+  ExportOptions export_options;
   FillOptions fill;
   FillFlagText text;
 };
@@ -157,7 +159,7 @@ int RunFill(FillArgs& args) {
     return Fail(filled.status().WithContext(given_input), stage);
   }
   for (const std::string& w : filled->warnings) PrintWarning(given_input + ": " + w);
-  const Status written = ExportFile(filled->scene, args.output);
+  const Status written = ExportFile(filled->scene, args.output, args.export_options);
   if (!written.ok()) return Fail(written, Stage::kOutput);
   const Status measured = MeasureWrittenKeys(args.output, *scene, *filled);
   if (!measured.ok()) return Fail(measured, Stage::kProcessing);
@@ -218,6 +220,7 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
   AddFillFlags(*command, args->fill, args->text);
   AddPcaMethodFlags(*command, args->fill, args->text);
   AddImportFlags(*command, args->import);
+  AddExportFlags(*command, args->export_options);
   command->footer(
       "Examples:\n"
       "  mocapfill fill sketch.glb -o enriched.glb --report fill.json\n"

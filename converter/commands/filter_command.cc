@@ -9,6 +9,7 @@
 #include "converter/console.h"
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
+#include "converter/export_flags.h"
 #include "converter/import_flags.h"
 #include "converter/node_flags.h"
 #include "formats/file_io.h"
@@ -27,6 +28,7 @@ struct FilterArgs {
   std::string output;
   std::string db;
   ImportOptions import;
+  ExportOptions export_options;
   NodeFlags flags;  // the filter node's options
 };
 
@@ -74,7 +76,7 @@ int RunFilter(const FilterArgs& args) {
   if (!filtered.ok()) return Fail(filtered.status().WithContext(args.input), Stage::kInput);
   const Scene& out = *std::get<std::shared_ptr<const Scene>>(*filtered);
   for (const MotionClip& clip : out.clips) PrintBands(clip, *options);
-  const Status written = ExportFile(out, args.output);
+  const Status written = ExportFile(out, args.output, args.export_options);
   if (!written.ok()) return Fail(written, Stage::kOutput);
   return kExitOk;
 }
@@ -90,6 +92,7 @@ void AddFilterCommand(CLI::App& app, CommandAction& action) {
   AddNodeFlags(*command, graph::FilterNodeSpec(), args->flags);
   command->add_option("--db", args->db, "Filter about this database's joint means (.mfdb file, motion folder or default)");
   AddImportFlags(*command, args->import);
+  AddExportFlags(*command, args->export_options);
   command->footer(
       "Examples:\n"
       "  mocapfill filter walk.bvh -o lively.glb --gains 1,1,1.5,1.5,1,1\n"

@@ -12,6 +12,7 @@
 #include "converter/console.h"
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
+#include "converter/export_flags.h"
 #include "converter/import_flags.h"
 #include "converter/option_values.h"
 #include "formats/file_io.h"
@@ -41,6 +42,7 @@ struct PcaArgs {
   std::vector<std::string> components;
   bool drop_residual = false;
   ImportOptions import;
+  ExportOptions export_options;
 };
 
 int RunBuild(PcaArgs& args) {
@@ -146,7 +148,7 @@ int RunEdit(const PcaArgs& args) {
     if (!edited.ok()) return Fail(edited.status().WithContext(args.input + ": clip '" + clip.name + "'"), Stage::kProcessing);
     clip = std::move(*edited);
   }
-  if (Status written = ExportFile(*scene, args.output); !written.ok()) return Fail(written, Stage::kOutput);
+  if (Status written = ExportFile(*scene, args.output, args.export_options); !written.ok()) return Fail(written, Stage::kOutput);
   return kExitOk;
 }
 
@@ -197,6 +199,7 @@ void AddPcaCommand(CLI::App& app, CommandAction& action) {
   edit->add_flag("--drop-residual", args->drop_residual,
                  "Rebuild the motion from the model only (default keeps the detail the model does not explain)");
   AddImportFlags(*edit, args->import);
+  AddExportFlags(*edit, args->export_options);
   edit->footer(
       "Examples:\n"
       "  mocapfill pca edit walk.glb -o proud.glb --model walk.pca --component 1=+2.0 --component 3=-1.0");

@@ -188,11 +188,18 @@ NodeTypeSpec ExportSpec() {
       PathOption("path", "output file; written atomically", IsExportExtension, "a .glb, .gltf or .bvh file"),
       StringOption("unit", "auto", {"auto", "m", "cm", "mm", "in", "ft", "cmu"}, "BVH output unit (auto = the source's)"),
       graph::BoolOption("pretty", true, "pretty-print the JSON of .gltf output"),
+      StringOption("skeleton", "skin", {"nodes", "skin", "mesh"},
+                   "glTF of a motion without a skinned mesh: bare nodes, a skin over the joints, or a skin and a "
+                   "stick-figure mesh"),
+      StringOption("bvh_layout", "source", {"source", "standard"},
+                   "BVH channels: the source's, or standard (rotations everywhere, positions only where they move)"),
   };
   spec.create = [](const NodeOptions& o) -> Result<std::unique_ptr<Node>> {
     ExportOptions options;
     options.unit = o.String("unit");
     options.pretty = o.Bool("pretty");
+    options.gltf_skeleton = *ParseGltfSkeleton(o.String("skeleton"));
+    options.bvh_layout = *ParseBvhLayout(o.String("bvh_layout"));
     return std::unique_ptr<Node>(new ExportNode(o.String("path"), options));
   };
   return spec;

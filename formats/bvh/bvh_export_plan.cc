@@ -96,10 +96,34 @@ std::vector<Channel> WithNeededPositions(const MotionClip& clip, int joint, cons
   return channels;
 }
 
-Result<JointExportPlan> PlanJoint(const Skeleton& skeleton, const MotionClip& clip, int j, bool bvh_layouts) {
+bool TranslationVaries(const MotionClip& clip, int joint) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (ComponentVaries(clip, joint, axis)) return true;
+  return false;
+}
+
+// The standard layout: XYZ positions when the translation moves, then the three rotations
+// in the order of the source's rotation channels (unlisted axes after them).
+Result<std::vector<Channel>> StandardChannels(const Skeleton& skeleton, const MotionClip& clip, int j) {
+  const Joint& joint = skeleton.joint(j);
+  std::vector<Channel> source = DefaultChannels(false);
+  if (!joint.bvh_channels.empty()) {
+    ASSIGN_OR_RETURN(source, SourceChannels(joint));
+  }
+  ASSIGN_OR_RETURN(const ChannelLayout source_layout, Layout(source, joint.name));
+  std::vector<Channel> channels;
+  if (TranslationVaries(clip, j)) channels = {Channel::kXposition, Channel::kYposition, Channel::kZposition};
+  for (int axis : source_layout.order.axes) channels.push_back(static_cast<Channel>(3 + axis));
+  return channels;
+}
+
+Result<JointExportPlan> PlanJoint(const Skeleton& skeleton, const MotionClip& clip, int j, bool bvh_layouts,
+                                  BvhLayout kind) {
   const Joint& joint = skeleton.joint(j);
   std::vector<Channel> channels;
-  if (bvh_layouts || !joint.bvh_channels.empty()) {
+  if (kind == BvhLayout::kStandard) {
+    ASSIGN_OR_RETURN(channels, StandardChannels(skeleton, clip, j));
+  } else if (bvh_layouts || !joint.bvh_channels.empty()) {
     ASSIGN_OR_RETURN(channels, SourceChannels(joint));
   } else {
     channels = DefaultChannels(joint.parent == kNoParent || (clip.translation_animated[j] != 0));
@@ -124,7 +148,9 @@ Result<JointExportPlan> PlanJoint(const Skeleton& skeleton, const MotionClip& cl
     plan.angle_index.push_back(index);
   }
   if (joint.parent != kNoParent) plan.parent_scale = skeleton.joint(joint.parent).rest_scale;
-  Eigen::Vector3d base = joint.bvh_offset.value_or(joint.rest_translation);
+  // A standard layout's position channels hold the whole translation, over a zero OFFSET.
+  Eigen::Vector3d base = kind == BvhLayout::kStandard ? Eigen::Vector3d::Zero()
+                                                      : joint.bvh_offset.value_or(joint.rest_translation);
   for (int axis = 0; axis < 3; ++axis)
     if (layout.position_slot[axis] < 0) base[axis] = clip.translation(0, j)[axis];
   plan.offset_m = plan.parent_scale.cwiseProduct(base);
@@ -134,11 +160,11 @@ Result<JointExportPlan> PlanJoint(const Skeleton& skeleton, const MotionClip& cl
 }  // namespace
 
 Result<std::vector<JointExportPlan>> PlanBvhExport(const Skeleton& skeleton, const MotionClip& clip,
-                                                   bool bvh_layouts) {
+                                                   bool bvh_layouts, BvhLayout kind) {
   std::vector<JointExportPlan> plans;
   plans.reserve(skeleton.num_joints());
   for (int j = 0; j < skeleton.num_joints(); ++j) {
-    ASSIGN_OR_RETURN(JointExportPlan plan, PlanJoint(skeleton, clip, j, bvh_layouts));
+    ASSIGN_OR_RETURN(JointExportPlan plan, PlanJoint(skeleton, clip, j, bvh_layouts, kind));
     plans.push_back(std::move(plan));
   }
   return plans;

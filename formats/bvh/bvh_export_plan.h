@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "formats/bvh/bvh_common.h"
+#include "formats/motion_io.h"
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
 
@@ -25,8 +26,10 @@ struct JointExportPlan {
 
 // Plans every joint of `skeleton` for `clip` (which must validate against it).
 // `bvh_layouts` says whether joints without bvh_channels had none in the source (a BVH
-// source) rather than being non-BVH joints that get the default layout.
+// source) rather than being non-BVH joints that get the default layout. With
+// BvhLayout::kStandard, every joint gets three rotations (in its source's rotation order)
+// and, only when its translation moves, XYZ positions with a zero OFFSET.
 Result<std::vector<JointExportPlan>> PlanBvhExport(const Skeleton& skeleton, const MotionClip& clip,
-                                                   bool bvh_layouts);
+                                                   bool bvh_layouts, BvhLayout kind = BvhLayout::kSource);
 
 }  // namespace mocapfill::bvh

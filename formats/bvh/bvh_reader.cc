@@ -1,5 +1,6 @@
 #include "formats/bvh/bvh_reader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <utility>
 #include <vector>
@@ -18,6 +19,9 @@ namespace bvh {
 namespace {
 
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+// A rest pose whose extent along the up axis is below this share of its widest extent does
+// not stand (see ResolveBvhUnit).
+constexpr double kFlatRestPoseShare = 0.25;
 
 }  // namespace
 
@@ -67,7 +71,14 @@ Status CheckFrameCount(const MotionHeader& header, int rows, const std::string& 
 }
 
 Result<UnitChoice> ResolveBvhUnit(const Skeleton& skeleton, const ImportOptions& options) {
-  const double height = RestPoseExtent(skeleton, options.up == "z" ? 2 : 1);
+  double height = RestPoseExtent(skeleton, options.up == "z" ? 2 : 1);
+  // A rest pose that does not stand says little about the height: Bandai-Namco's bones run
+  // along +X, and only the hips' OFFSET lifts them; written in the standard layout (hips
+  // OFFSET zero, their height in the position channels) the pose lies flat. Its widest
+  // extent then stands in for the height.
+  double widest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) widest = std::max(widest, RestPoseExtent(skeleton, axis));
+  if (height < kFlatRestPoseShare * widest) height = widest;
   return ResolveUnit(options.unit, "cm", height);
 }
 

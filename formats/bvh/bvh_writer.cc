@@ -191,7 +191,7 @@ Result<std::string> WriteBvh(const Scene& scene, const ExportOptions& options) {
   // layout, including joints that had no channels; others get the default layout.
   bool bvh_layouts = scene.source.format == "bvh";
   for (const Joint& joint : skeleton.joints()) bvh_layouts = bvh_layouts || !joint.bvh_channels.empty();
-  ASSIGN_OR_RETURN(std::vector<bvh::JointExportPlan> plans, bvh::PlanBvhExport(skeleton, clip, bvh_layouts));
+  ASSIGN_OR_RETURN(std::vector<bvh::JointExportPlan> plans, bvh::PlanBvhExport(skeleton, clip, bvh_layouts, options.bvh_layout));
   size_t channels = 0;
   for (const auto& plan : plans) channels += plan.layout.channels.size();
   if (channels == 0) {

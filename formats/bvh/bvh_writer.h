@@ -1,5 +1,6 @@
 // BVH export: writes each joint's channels in the layout the source had (or 6 channels
-// on roots and 3 elsewhere, ZXY, for non-BVH sources), Euler angles continuous over time.
+// on roots and 3 elsewhere, ZXY, for non-BVH sources), or in the standard layout
+// (ExportOptions::bvh_layout), Euler angles continuous over time.
 #pragma once
 
 #include <string>

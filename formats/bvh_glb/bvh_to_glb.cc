@@ -47,7 +47,7 @@ int PositionGroup(const bvh::ParsedJoint& joint, const std::vector<bvh::rows::Ch
 }  // namespace
 
 std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path,
-                                          const ImportOptions& options) {
+                                          const ImportOptions& options, const ExportOptions& export_options) {
   if (!bvh::CheckImportOptions(options).ok() || options.up == "z") return std::nullopt;
   bvh::BvhLexer lexer(bvh::WithoutByteOrderMark(text), path);
   Result<bvh::ParsedHierarchy> hierarchy = bvh::ParseHierarchy(lexer);
@@ -115,9 +115,10 @@ std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::stri
                                static_cast<size_t>(std::count(moves.begin(), moves.end(), true))};
   const float first_s = tracks[0], last_s = tracks[layout.frames - 1];
   scene.clips.push_back(std::move(clip));
-  Result<std::string> head = WriteGlbHeadForTracks(scene, layout, first_s, last_s);
+  Result<GlbFile> head = WriteGlbHeadForTracks(scene, layout, first_s, last_s, export_options);
   if (!head.ok()) return std::nullopt;
-  glb.head = std::move(*head);
+  glb.head = std::move(head->head);
+  glb.tail = std::move(head->bin);
   glb.tracks.resize(layout.TotalFloats() * sizeof(float));
   return glb;
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "formats/large_buffer.h"
 #include "formats/motion_io.h"
@@ -17,13 +18,15 @@ namespace mocapfill::bvh_glb {
 
 struct StreamedGlb {
   std::string head;    // glb header, JSON chunk, binary chunk header
-  LargeBuffer tracks;  // the binary chunk
+  LargeBuffer tracks;  // the binary chunk's start: the clip's tracks
+  std::vector<unsigned char> tail;  // the rest of the binary chunk: the skin (ExportOptions::gltf_skeleton)
 };
 
 // The .glb of BVH `text` (`path` names it in the file's provenance), when the conversion
 // is a plain one: valid text whose import gives no warning, a Y-up source, and a clip
 // whose frame times fit float32. nullopt otherwise; ImportFile and ExportFile then give the
 // same file, or the error or warning, through the clip.
-std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path, const ImportOptions& options);
+std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path, const ImportOptions& options,
+                                          const ExportOptions& export_options = {});
 
 }  // namespace mocapfill::bvh_glb

@@ -1,4 +1,4 @@
-// The JSON chunk of a skeleton-and-animation .glb, written straight from the tinygltf
+// The JSON chunk of a skeleton-and-animation .glb (a skin over the joints included), written straight from the tinygltf
 // model instead of through tinygltf's serialiser. That serialiser builds an nlohmann::json
 // tree (a std::map per object, a heap string per key) and then prints it: about 0.2 ms for
 // a 22-joint clip, a tenth of a whole BVH conversion in batch mode. The text here is the
@@ -135,14 +135,17 @@ bool IsNull(const Value& value) { return value.Type() == tinygltf::NULL_TYPE; }
 // The parts of a model written here; anything else goes through tinygltf's serialiser.
 bool IsSkeletonAndAnimation(const tinygltf::Model& m) {
   if (!m.buffers.empty() || !m.materials.empty() || !m.meshes.empty() || !m.textures.empty() || !m.images.empty() ||
-      !m.skins.empty() || !m.samplers.empty() || !m.cameras.empty() || !m.lights.empty() || !m.extensionsUsed.empty() ||
+      !m.samplers.empty() || !m.cameras.empty() || !m.lights.empty() || !m.extensionsUsed.empty() ||
       !m.extensionsRequired.empty() || !m.extensions.empty() || !IsNull(m.extras) || !m.asset.extensions.empty())
     return false;
   for (const tinygltf::Accessor& a : m.accessors)
     if (a.sparse.isSparse || a.normalized || !a.name.empty() || !IsNull(a.extras) ||
         a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.type < TINYGLTF_TYPE_VEC2 ||
-        (a.type > TINYGLTF_TYPE_VEC4 && a.type != TINYGLTF_TYPE_SCALAR))
+        (a.type > TINYGLTF_TYPE_VEC4 && a.type != TINYGLTF_TYPE_SCALAR && a.type != TINYGLTF_TYPE_MAT4))
       return false;
+  // (tinygltf 2.7 writes a skin's joints, inverseBindMatrices, skeleton and name only.)
+  for (const tinygltf::Skin& skin : m.skins)
+    if (skin.joints.empty()) return false;
   for (const tinygltf::Animation& animation : m.animations) {
     if (!animation.extensions.empty() || !IsNull(animation.extras) || animation.channels.empty() ||
         animation.samplers.empty())
@@ -170,6 +173,7 @@ const char* TypeName(int type) {
     case TINYGLTF_TYPE_VEC2: return "VEC2";
     case TINYGLTF_TYPE_VEC3: return "VEC3";
     case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
     default: return "SCALAR";
   }
 }
@@ -283,6 +287,17 @@ std::optional<std::string> SkeletonGlbJson(const tinygltf::Model& model, size_t 
             if (!s.nodes.empty()) AppendNumberArray(s.nodes, scene.Key("nodes"));
           },
           o.Key("scenes"));
+    if (!model.skins.empty())
+      AppendArray(
+          model.skins,
+          [](const tinygltf::Skin& skin, std::string& text) {
+            ObjectWriter s(text);
+            if (skin.inverseBindMatrices >= 0) AppendInteger(skin.inverseBindMatrices, s.Key("inverseBindMatrices"));
+            AppendNumberArray(skin.joints, s.Key("joints"));
+            if (!skin.name.empty()) AppendProperty(skin.name, s.Key("name"));
+            if (skin.skeleton >= 0) AppendInteger(skin.skeleton, s.Key("skeleton"));
+          },
+          o.Key("skins"));
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;  // a string that is not UTF-8: tinygltf's serialiser reports it
   }

@@ -9,7 +9,7 @@ int BufferWriter::AddView(const void* data, size_t size, int target) {
   bytes_.resize((bytes_.size() + 3) / 4 * 4, 0);  // zero padding to the next 4-byte boundary
   tinygltf::BufferView view;
   view.buffer = 0;
-  view.byteOffset = bytes_.size();
+  view.byteOffset = base_ + bytes_.size();
   view.byteLength = size;
   view.target = target;
   const auto* p = static_cast<const unsigned char*>(data);
@@ -28,7 +28,7 @@ float* BufferWriter::AddFloatView(size_t count, int& view) {
   const size_t offset = bytes_.size();
   tinygltf::BufferView buffer_view;
   buffer_view.buffer = 0;
-  buffer_view.byteOffset = offset;
+  buffer_view.byteOffset = base_ + offset;
   buffer_view.byteLength = count * sizeof(float);
   bytes_.resize(offset + count * sizeof(float));
   model_.bufferViews.push_back(std::move(buffer_view));

@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "formats/gltf/gltf_generated.h"
 #include "formats/gltf/gltf_str.h"
 #include "formats/gltf/tinygltf_name.h"
+#include "formats/motion_io.h"
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
 
@@ -51,9 +53,15 @@ class BufferWriter {
   // the model gets no buffer entry (GlbJson writes it).
   std::vector<unsigned char> TakeBinaryChunk();
 
+  // The views added from here on follow `bytes` bytes (a multiple of 4) that the caller
+  // keeps apart at the start of the binary chunk (AddViewAt's); TakeBinaryChunk then
+  // returns what comes after them.
+  void StartAfter(size_t bytes) { base_ = bytes; }
+
  private:
   tinygltf::Model& model_;
   std::vector<unsigned char> bytes_;
+  size_t base_ = 0;
 };
 
 // Adds the scene's meshes, their materials and the skins they use. Joint j must already be
@@ -61,6 +69,33 @@ class BufferWriter {
 // validator warns about anything else); rigid meshes become children of their joint's
 // node. Root-level mesh nodes are appended to `scene_roots`.
 Status ExportMeshes(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model, std::vector<int>& scene_roots);
+
+// One skin (its inverse bind matrices, skeleton = the joints' common root) into the model;
+// returns its index.
+Result<int> ExportSkin(const Skin& skin, const Skeleton& skeleton, BufferWriter& buffer, tinygltf::Model& model);
+
+// One mesh (primitives, materials) and a node for it, without a skin (the caller sets the
+// node's skin); returns the node's index. The caller places the node in the scene.
+Result<int> ExportMesh(const Mesh& mesh, const std::vector<Skin>& skins, const Skeleton& skeleton, BufferWriter& buffer,
+                       tinygltf::Model& model);
+
+// The skin and stick-figure mesh written for a scene without a skinned mesh of its own
+// (ExportOptions::gltf_skeleton), named kGeneratedSkeletonName (gltf_generated.h) and
+// recorded in asset.extras.mocapfill.generated_skeleton.
+bool NeedsGeneratedSkeleton(const Scene& scene, GltfSkeleton option);
+// Every joint (joint j = skin slot j), bound in the rest pose: inverse bind matrix j is the
+// inverse of joint j's world rest transform.
+Skin RestPoseSkin(const Skeleton& skeleton);
+// An octahedron per bone (parent to child, and joint to End Site) in the rest pose, every
+// vertex bound fully to the bone's parent joint; skin 0 (RestPoseSkin).
+Mesh StickFigureMesh(const Skeleton& skeleton);
+struct GeneratedSkeleton {
+  int skin = -1;
+  int mesh = -1;       // -1 without the mesh
+  int mesh_node = -1;  // at the scene root, untransformed (a skinned mesh's node must be)
+};
+Result<GeneratedSkeleton> ExportGeneratedSkeleton(const Skeleton& skeleton, bool with_mesh, BufferWriter& buffer,
+                                                  tinygltf::Model& model, std::vector<int>& scene_roots);
 
 // The JSON chunk of a .glb whose binary chunk holds `bin_bytes` bytes: the same bytes
 // tinygltf's WriteGltfSceneToStream writes (it is tinygltf's serialiser; see
@@ -82,6 +117,6 @@ struct GlbJsonPair {
   std::optional<std::string> direct;
   std::string tinygltf;
 };
-Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene);
+Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene, const ExportOptions& options = {});
 
 }  // namespace mocapfill::gltf_internal

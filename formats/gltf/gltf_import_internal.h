@@ -64,9 +64,13 @@ Result<SkeletonImport> ImportSkeleton(const tinygltf::Model& model, const NodeGr
                                       std::vector<std::string>& warnings);
 
 // Skinned and rigid meshes of the scene (and the skins they use) into `scene`, whose
-// skeleton must already be set from `skeleton`.
+// skeleton must already be set from `skeleton`; all but the stick figure our writer made
+// (GeneratedSkeletonMesh).
 Status ImportMeshes(const tinygltf::Model& model, const NodeGraph& graph, const SkeletonImport& skeleton,
                     Scene& scene);
+
+// The index of the stick-figure mesh our writer made (gltf_generated.h), or -1.
+int GeneratedSkeletonMesh(const tinygltf::Model& model);
 
 // A clip as our exporter recorded it in asset.extras.mocapfill.
 struct RecordedClip {

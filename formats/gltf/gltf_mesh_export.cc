@@ -43,7 +43,7 @@ int MaterialIndex(const Eigen::Vector4f& color, tinygltf::Model& model, std::map
   const auto it = known.find(key);
   if (it != known.end()) return it->second;
   tinygltf::Material material;
-  material.name = "material_" + Str(known.size());
+  material.name = "material_" + Str(model.materials.size());
   material.pbrMetallicRoughness.baseColorFactor = {color[0], color[1], color[2], color[3]};
   model.materials.push_back(std::move(material));
   known[key] = static_cast<int>(model.materials.size()) - 1;
@@ -113,7 +113,11 @@ tinygltf::Primitive ExportPrimitive(const MeshPrimitive& p, int skin_joints, Buf
   return out;
 }
 
+}  // namespace
+
 // The closest common ancestor (or self) of the skin's joints, or -1 across separate trees.
+namespace {
+
 int CommonRoot(const Skeleton& skeleton, const std::vector<int>& joints) {
   std::vector<int> chain;  // the first joint and its ancestors, nearest first
   for (int j = joints[0]; j != kNoParent; j = skeleton.parent(j)) chain.push_back(j);
@@ -126,6 +130,8 @@ int CommonRoot(const Skeleton& skeleton, const std::vector<int>& joints) {
   }
   return chain[deepest];
 }
+
+}  // namespace
 
 Result<int> ExportSkin(const Skin& skin, const Skeleton& skeleton, BufferWriter& buffer, tinygltf::Model& model) {
   if (skin.joints.empty() || skin.inverse_bind_matrices.size() != skin.joints.size())
@@ -149,42 +155,52 @@ Result<int> ExportSkin(const Skin& skin, const Skeleton& skeleton, BufferWriter&
   return static_cast<int>(model.skins.size()) - 1;
 }
 
-}  // namespace
+Result<int> ExportMesh(const Mesh& mesh, const std::vector<Skin>& skins, const Skeleton& skeleton, BufferWriter& buffer,
+                       tinygltf::Model& model) {
+  const std::string field = "mesh '" + mesh.name + "'";
+  if (mesh.skin >= static_cast<int>(skins.size()) || mesh.attach_joint >= skeleton.num_joints())
+    return Internal(field + ": skin or joint index out of range");
+  const int skin_joints = mesh.skin >= 0 ? static_cast<int>(skins[mesh.skin].joints.size()) : 0;
+  tinygltf::Mesh out;
+  out.name = mesh.name;
+  std::map<std::array<float, 4>, int> materials;
+  for (size_t m = 0; m < model.materials.size(); ++m) {
+    const std::vector<double>& c = model.materials[m].pbrMetallicRoughness.baseColorFactor;
+    materials.emplace(std::array<float, 4>{static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]),
+                                           static_cast<float>(c[3])},
+                      static_cast<int>(m));
+  }
+  for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+    RETURN_IF_ERROR(CheckPrimitive(mesh.primitives[p], skin_joints, field + " primitive " + Str(p)));
+    out.primitives.push_back(ExportPrimitive(mesh.primitives[p], skin_joints, buffer, model, materials));
+  }
+  model.meshes.push_back(std::move(out));
+  tinygltf::Node node;
+  node.name = mesh.name;
+  node.mesh = static_cast<int>(model.meshes.size()) - 1;
+  model.nodes.push_back(std::move(node));
+  return static_cast<int>(model.nodes.size()) - 1;
+}
 
 Status ExportMeshes(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model, std::vector<int>& scene_roots) {
-  std::map<std::array<float, 4>, int> materials;
   std::map<int, int> skin_index;  // Scene::skins -> glTF skins, only those a mesh uses
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    const Mesh& mesh = scene.meshes[m];
-    const std::string field = "mesh '" + mesh.name + "'";
+  for (const Mesh& mesh : scene.meshes) {
     if (mesh.primitives.empty()) continue;
-    if (mesh.skin >= static_cast<int>(scene.skins.size()) || mesh.attach_joint >= scene.skeleton.num_joints())
-      return Internal(field + ": skin or joint index out of range");
-    const int skin_joints = mesh.skin >= 0 ? static_cast<int>(scene.skins[mesh.skin].joints.size()) : 0;
-    tinygltf::Mesh out;
-    out.name = mesh.name;
-    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-      RETURN_IF_ERROR(CheckPrimitive(mesh.primitives[p], skin_joints, field + " primitive " + Str(p)));
-      out.primitives.push_back(ExportPrimitive(mesh.primitives[p], skin_joints, buffer, model, materials));
-    }
-    model.meshes.push_back(std::move(out));
-    tinygltf::Node node;
-    node.name = mesh.name;
-    node.mesh = static_cast<int>(model.meshes.size()) - 1;
-    const int node_index = static_cast<int>(model.nodes.size());
+    if (mesh.skin >= static_cast<int>(scene.skins.size()))
+      return Internal("mesh '" + mesh.name + "': skin or joint index out of range");
+    ASSIGN_OR_RETURN(const int node_index, ExportMesh(mesh, scene.skins, scene.skeleton, buffer, model));
     if (mesh.skin >= 0) {
       if (!skin_index.count(mesh.skin)) {
         ASSIGN_OR_RETURN(const int s, ExportSkin(scene.skins[mesh.skin], scene.skeleton, buffer, model));
         skin_index[mesh.skin] = s;
       }
-      node.skin = skin_index[mesh.skin];
-      scene_roots.push_back(node_index);
-    } else if (mesh.attach_joint >= 0) {
+      model.nodes[node_index].skin = skin_index[mesh.skin];
+    }
+    if (mesh.skin < 0 && mesh.attach_joint >= 0) {
       model.nodes[mesh.attach_joint].children.push_back(node_index);
     } else {
       scene_roots.push_back(node_index);
     }
-    model.nodes.push_back(std::move(node));
   }
   return OkStatus();
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "formats/gltf/gltf_generated.h"
 #include "formats/gltf/gltf_import_internal.h"
 #include "formats/gltf/gltf_weights.h"
 
@@ -179,11 +180,26 @@ Result<int> ImportSkin(const tinygltf::Model& model, int s, const SkeletonImport
 
 }  // namespace
 
+int GeneratedSkeletonMesh(const tinygltf::Model& model) {
+  const tinygltf::Value* v = &model.asset.extras;
+  for (const char* key : {"mocapfill", "generated_skeleton", "mesh"}) {
+    if (!v->IsObject()) return -1;
+    v = &v->Get(key);
+  }
+  const tinygltf::Value& generated = *v;
+  if (!generated.IsInt()) return -1;
+  const int mesh = generated.Get<int>();
+  if (mesh < 0 || mesh >= static_cast<int>(model.meshes.size()) || model.meshes[mesh].name != kGeneratedSkeletonName)
+    return -1;
+  return mesh;
+}
+
 Status ImportMeshes(const tinygltf::Model& model, const NodeGraph& graph, const SkeletonImport& skeleton, Scene& scene) {
   std::map<int, int> skin_index;  // glTF skin -> Scene::skins
+  const int generated = GeneratedSkeletonMesh(model);
   for (int node_index : SceneOrder(model, graph.scene_roots)) {
     const tinygltf::Node& node = model.nodes[node_index];
-    if (node.mesh < 0) continue;
+    if (node.mesh < 0 || node.mesh == generated) continue;
     const tinygltf::Mesh& gltf_mesh = model.meshes[node.mesh];
     Mesh mesh;
     mesh.name = gltf_mesh.name.empty() ? "mesh_" + Str(node.mesh) : gltf_mesh.name;

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "formats/gltf/gltf_export_internal.h"
@@ -184,7 +185,7 @@ Value ClipExtras(const MotionClip& clip, const std::vector<JointKeys>* sparse_ke
 }
 
 // `dense_keys`: every clip is known to be keyed at every frame (its keys are not read).
-Value ProvenanceExtras(const Scene& scene, bool dense_keys = false) {
+Value ProvenanceExtras(const Scene& scene, bool dense_keys, const gltf_internal::GeneratedSkeleton* generated) {
   const SourceInfo& s = scene.source;
   Value::Object info;
   info["source_format"] = Value(s.format);
@@ -203,6 +204,12 @@ Value ProvenanceExtras(const Scene& scene, bool dense_keys = false) {
   for (const MotionClip& clip : scene.clips)
     clips.push_back(ClipExtras(clip, dense_keys || KeysAreDense(clip) ? nullptr : &clip.keys, scene.skeleton));
   info["clips"] = Value(std::move(clips));
+  if (generated != nullptr) {
+    Value::Object made;
+    made["skin"] = Value(generated->skin);
+    if (generated->mesh >= 0) made["mesh"] = Value(generated->mesh);
+    info["generated_skeleton"] = Value(std::move(made));
+  }
   return Value(Value::Object{{"mocapfill", Value(std::move(info))}});
 }
 
@@ -212,25 +219,42 @@ Status CheckExportable(const Scene& scene) {
   return OkStatus();
 }
 
-void AddSceneAndAsset(const Scene& scene, std::vector<int> roots, bool dense_keys, tinygltf::Model& model) {
+void AddSceneAndAsset(const Scene& scene, std::vector<int> roots, bool dense_keys,
+                      const gltf_internal::GeneratedSkeleton* generated, tinygltf::Model& model) {
   tinygltf::Scene gltf_scene;
   gltf_scene.nodes = std::move(roots);
   model.scenes.push_back(std::move(gltf_scene));
   model.defaultScene = 0;
   model.asset.generator = "mocapfill";
   model.asset.version = "2.0";
-  model.asset.extras = ProvenanceExtras(scene, dense_keys);
+  model.asset.extras = ProvenanceExtras(scene, dense_keys, generated);
+}
+
+// The skin (and mesh) a scene without a skinned mesh gets, after every other buffer view so
+// that a streamed clip's tracks (WriteGlbHeadForTracks) can lead the binary chunk.
+Result<std::optional<gltf_internal::GeneratedSkeleton>> AddGeneratedSkeleton(const Scene& scene,
+                                                                             const ExportOptions& options,
+                                                                             BufferWriter& buffer,
+                                                                             tinygltf::Model& model,
+                                                                             std::vector<int>& roots) {
+  if (!gltf_internal::NeedsGeneratedSkeleton(scene, options.gltf_skeleton))
+    return std::optional<gltf_internal::GeneratedSkeleton>();
+  ASSIGN_OR_RETURN(const gltf_internal::GeneratedSkeleton generated,
+                   gltf_internal::ExportGeneratedSkeleton(scene.skeleton,
+                                                          options.gltf_skeleton == GltfSkeleton::kSkinAndMesh, buffer,
+                                                          model, roots));
+  return std::optional<gltf_internal::GeneratedSkeleton>(generated);
 }
 
 // Everything but the buffer: nodes, meshes and skins, animations, scene, asset.
-Status BuildModel(const Scene& scene, BufferWriter& buffer, tinygltf::Model& model) {
+Status BuildModel(const Scene& scene, const ExportOptions& options, BufferWriter& buffer, tinygltf::Model& model) {
   RETURN_IF_ERROR(CheckExportable(scene));
   AddJointNodes(scene.skeleton, model);
   std::vector<int> roots = scene.skeleton.Roots();
   RETURN_IF_ERROR(gltf_internal::ExportMeshes(scene, buffer, model, roots));
   for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(AddAnimation(clip, buffer, model));
-
-  AddSceneAndAsset(scene, std::move(roots), false, model);
+  ASSIGN_OR_RETURN(const auto generated, AddGeneratedSkeleton(scene, options, buffer, model, roots));
+  AddSceneAndAsset(scene, std::move(roots), false, generated ? &*generated : nullptr, model);
   return OkStatus();
 }
 
@@ -267,7 +291,7 @@ Result<std::string> GlbHead(const std::string& json, size_t bin_bytes) {
 Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options) {
   tinygltf::Model model;
   BufferWriter buffer(model);
-  RETURN_IF_ERROR(BuildModel(scene, buffer, model));
+  RETURN_IF_ERROR(BuildModel(scene, options, buffer, model));
   GlbFile file;
   file.bin = buffer.TakeBinaryChunk();  // padded to 4 bytes, so the chunk needs no padding
   ASSIGN_OR_RETURN(file.head, GlbHead(gltf_internal::GlbJson(model, file.bin.size()), file.bin.size()));
@@ -276,18 +300,18 @@ Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options) {
 
 namespace gltf_internal {
 
-Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene) {
+Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene, const ExportOptions& options) {
   tinygltf::Model model;
   BufferWriter buffer(model);
-  RETURN_IF_ERROR(BuildModel(scene, buffer, model));
+  RETURN_IF_ERROR(BuildModel(scene, options, buffer, model));
   const size_t bin_bytes = buffer.TakeBinaryChunk().size();
   return GlbJsonPair{SkeletonGlbJson(model, bin_bytes), TinygltfGlbJson(model, bin_bytes)};
 }
 
 }  // namespace gltf_internal
 
-Result<std::string> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout& layout, float first_time_s,
-                                          float last_time_s) {
+Result<GlbFile> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout& layout, float first_time_s,
+                                      float last_time_s, const ExportOptions& options) {
   if (scene.skeleton.num_joints() == 0) return InvalidArgument("nothing to export: the scene has no skeleton");
   if (scene.clips.size() != 1 || !scene.meshes.empty() || !scene.skins.empty())
     return InvalidArgument("packed tracks describe exactly one clip of a scene without meshes");
@@ -307,9 +331,16 @@ Result<std::string> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLay
   if (!moving.empty())
     views.translation = buffer.AddViewAt(layout.TranslationTrack(0) * sizeof(float), 3 * n * moving.size() * sizeof(float));
   AddAnimationChannels(clip.name, layout, moving, first_time_s, last_time_s, views, buffer, model);
-  AddSceneAndAsset(scene, scene.skeleton.Roots(), true, model);
-  const size_t bin_bytes = layout.TotalFloats() * sizeof(float);
-  return GlbHead(gltf_internal::GlbJson(model, bin_bytes), bin_bytes);
+  const size_t track_bytes = layout.TotalFloats() * sizeof(float);
+  buffer.StartAfter(track_bytes);
+  std::vector<int> roots = scene.skeleton.Roots();
+  ASSIGN_OR_RETURN(const auto generated, AddGeneratedSkeleton(scene, options, buffer, model, roots));
+  AddSceneAndAsset(scene, std::move(roots), true, generated ? &*generated : nullptr, model);
+  GlbFile file;
+  file.bin = buffer.TakeBinaryChunk();
+  const size_t bin_bytes = track_bytes + file.bin.size();
+  ASSIGN_OR_RETURN(file.head, GlbHead(gltf_internal::GlbJson(model, bin_bytes), bin_bytes));
+  return file;
 }
 
 Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptions& options) {
@@ -323,7 +354,7 @@ Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptio
   }
   tinygltf::Model model;
   BufferWriter buffer(model);
-  RETURN_IF_ERROR(BuildModel(scene, buffer, model));
+  RETURN_IF_ERROR(BuildModel(scene, options, buffer, model));
   buffer.Finish();
   tinygltf::TinyGLTF writer;
   std::ostringstream out;

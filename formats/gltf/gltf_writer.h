@@ -23,13 +23,14 @@ struct GlbFile {
 };
 Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options);
 
-// The head of a .glb (as in GlbFile) whose binary chunk is one clip's tracks, packed by the
-// caller as `layout` says (gltf_tracks.h): WriteGlb's head for the same scene and samples.
-// `scene` has a skeleton, no meshes or skins, and one clip whose name, rate, frame and joint
-// counts and translation_animated are set; its sample arrays and keys are not read (every
-// frame counts as keyed). `first_time_s` / `last_time_s` are the packed first and last frame
-// times (the time accessor's min and max).
-Result<std::string> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout& layout, float first_time_s,
-                                          float last_time_s);
+// A .glb whose binary chunk starts with one clip's tracks, packed by the caller as
+// `layout` says (gltf_tracks.h): the file is head, tracks, then bin (the skin and mesh of
+// ExportOptions::gltf_skeleton; empty without them), the bytes WriteGlb writes for the same
+// scene and samples. `scene` has a skeleton, no meshes or skins, and one clip whose name,
+// rate, frame and joint counts and translation_animated are set; its sample arrays and keys
+// are not read (every frame counts as keyed). `first_time_s` / `last_time_s` are the packed
+// first and last frame times (the time accessor's min and max).
+Result<GlbFile> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout& layout, float first_time_s,
+                                      float last_time_s, const ExportOptions& options);
 
 }  // namespace mocapfill

@@ -21,6 +21,12 @@ struct LoadOptions {
 struct SaveOptions {
   std::string unit = "auto";  // BVH length unit; auto = the source's
   bool pretty = true;         // .gltf: indented JSON
+  // glTF: "skin" (a skin over the joints, so importers make an armature), "mesh" (also a
+  // skinned stick figure) or "nodes" (bare joint nodes).
+  std::string gltf_skeleton = "skin";
+  // BVH: "source" (the source's channel layout, exact) or "standard" (rotation channels on
+  // every joint, position channels only where joints translate: what every reader reads).
+  std::string bvh_layout = "source";
 };
 
 // Throws Error: kInvalidInput naming the file and the line or field, kUsage for bad options.

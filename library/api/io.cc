@@ -1,5 +1,7 @@
 #include "mocapfill/io.h"
 
+#include <optional>
+
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "library/api/access.h"
@@ -22,6 +24,16 @@ ExportOptions ToExport(const SaveOptions& options) {
   ExportOptions out;
   out.unit = options.unit;
   out.pretty = options.pretty;
+  const std::optional<GltfSkeleton> skeleton = ParseGltfSkeleton(options.gltf_skeleton);
+  if (!skeleton)
+    ThrowIfError(InvalidArgument("gltf_skeleton: expected skin, mesh or nodes, got '" + options.gltf_skeleton + "'"),
+                 FailureStage::kOutput);
+  const std::optional<BvhLayout> layout = ParseBvhLayout(options.bvh_layout);
+  if (!layout)
+    ThrowIfError(InvalidArgument("bvh_layout: expected source or standard, got '" + options.bvh_layout + "'"),
+                 FailureStage::kOutput);
+  out.gltf_skeleton = *skeleton;
+  out.bvh_layout = *layout;
   return out;
 }
 

@@ -93,3 +93,18 @@ def test_bad_arrays_are_usage_errors(fixtures):
         mocapfill.Scene.from_skeleton(["a", "b"], [-1], np.zeros((2, 3)), np.tile([0, 0, 0, 1.0], (2, 1)))
     with pytest.raises(mocapfill.UsageError):
         source.clip(7)
+
+
+def test_save_options(fixtures, tmp_path):
+    scene = mocapfill.load(str(fixtures / "bvh" / "bandai_walk_normal_001_short.bvh"))
+    standard = tmp_path / "standard.bvh"
+    mocapfill.save(scene, str(standard), bvh_layout="standard")
+    back = mocapfill.load(str(standard))
+    assert back.joint_names == scene.joint_names
+    assert back.clip(0).frame_count == scene.clip(0).frame_count
+    for skeleton in ("skin", "mesh", "nodes"):
+        mocapfill.save(scene, str(tmp_path / (skeleton + ".glb")), gltf_skeleton=skeleton)
+    assert mocapfill.load(str(tmp_path / "mesh.glb")).mesh_count >= 1
+    with pytest.raises(mocapfill.UsageError, match="gltf_skeleton"):
+        mocapfill.save(scene, str(tmp_path / "x.glb"), gltf_skeleton="armature")
+    assert not (tmp_path / "x.glb").exists()

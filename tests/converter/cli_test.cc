@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
@@ -67,6 +68,45 @@ TEST(Cli, UsageErrorsExitWithOne) {
   const std::string dir = testing::ScratchDir("cli_usage");
   EXPECT_EQ(RunCli("convert " + Quote(FixtureBvhFiles().at(0)) + " " + Quote(dir + "/out.obj")).exit_code, 1);
   EXPECT_FALSE(fs::exists(dir + "/out.obj"));
+}
+
+// --no-skin, --skeleton-mesh and --bvh-layout: what each writes, and usage errors (exit 1,
+// nothing written) for contradicting or unknown values.
+TEST(Cli, SkeletonAndBvhLayoutFlags) {
+  const std::string bvh = Quote(testing::FixturePath("bvh/bandai_walk_normal_001_short.bvh"));
+  const std::string dir = testing::TestOutputDir("cli_skeleton_flags");
+  const auto json_of = [](const std::string& glb) {
+    const std::string bytes = ReadAll(glb);
+    uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return nlohmann::json::parse(bytes.substr(20, length));
+  };
+  ASSERT_EQ(RunCli("convert " + bvh + " " + Quote(dir + "/skin.glb")).exit_code, 0);
+  ASSERT_EQ(RunCli("convert " + bvh + " " + Quote(dir + "/mesh.glb") + " --skeleton-mesh").exit_code, 0);
+  ASSERT_EQ(RunCli("convert " + bvh + " " + Quote(dir + "/bare.glb") + " --no-skin").exit_code, 0);
+  const nlohmann::json skin = json_of(dir + "/skin.glb"), mesh = json_of(dir + "/mesh.glb"),
+                       bare = json_of(dir + "/bare.glb");
+  EXPECT_EQ(skin["skins"][0]["joints"].size(), skin["nodes"].size());
+  EXPECT_FALSE(skin.contains("meshes"));
+  EXPECT_EQ(mesh["meshes"].size(), 1u);
+  EXPECT_EQ(mesh["nodes"].back()["skin"], 0);
+  EXPECT_FALSE(bare.contains("skins"));
+  // The stick figure read back is left out: converting mesh.glb again gives one, not two.
+  ASSERT_EQ(RunCli("convert " + Quote(dir + "/mesh.glb") + " " + Quote(dir + "/mesh_again.glb") + " --skeleton-mesh")
+                .exit_code,
+            0);
+  EXPECT_EQ(json_of(dir + "/mesh_again.glb")["meshes"].size(), 1u);
+  EXPECT_EQ(json_of(dir + "/mesh_again.glb")["nodes"].size(), mesh["nodes"].size());
+
+  const std::string scratch = testing::ScratchDir("cli_skeleton_flags");
+  const RunResult both = RunCli("convert " + bvh + " " + Quote(scratch + "/x.glb") + " --no-skin --skeleton-mesh");
+  EXPECT_EQ(both.exit_code, 1) << both.output;
+  EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
+  EXPECT_EQ(RunCli("convert " + bvh + " " + Quote(scratch + "/x.bvh") + " --bvh-layout three").exit_code, 1);
+  EXPECT_FALSE(fs::exists(scratch + "/x.glb") || fs::exists(scratch + "/x.bvh"));
+  ASSERT_EQ(RunCli("convert " + bvh + " " + Quote(scratch + "/standard.bvh") + " --bvh-layout standard").exit_code, 0);
+  const std::string standard = ReadAll(scratch + "/standard.bvh");
+  EXPECT_NE(standard.find("JOINT Hips\n\t{\n\t\tOFFSET 0 0 0\n\t\tCHANNELS 6"), std::string::npos);
 }
 
 TEST(Cli, MissingInputExitsWithTwoAndWritesNothing) {

@@ -27,17 +27,19 @@ using testing::FixturePath;
 using testing::ReadText;
 
 std::optional<std::string> Streamed(const std::string& text, const std::string& path, int threads,
-                                    ImportOptions options = {}) {
+                                    ImportOptions options = {}, const ExportOptions& export_options = {}) {
   options.threads = threads;
-  std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text, path, options);
+  std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text, path, options, export_options);
   if (!glb) return std::nullopt;
-  return glb->head + std::string(glb->tracks.view());
+  return glb->head + std::string(glb->tracks.view()) +
+         std::string(reinterpret_cast<const char*>(glb->tail.data()), glb->tail.size());
 }
 
-Result<std::string> ThroughTheClip(const std::string& text, const std::string& path, ImportOptions options = {}) {
+Result<std::string> ThroughTheClip(const std::string& text, const std::string& path, ImportOptions options = {},
+                                   const ExportOptions& export_options = {}) {
   options.threads = 1;
   ASSIGN_OR_RETURN(const Scene scene, ReadBvh(text, path, options));
-  ASSIGN_OR_RETURN(const GlbFile glb, WriteGlb(scene, {}));
+  ASSIGN_OR_RETURN(const GlbFile glb, WriteGlb(scene, export_options));
   return glb.head + std::string(reinterpret_cast<const char*>(glb.bin.data()), glb.bin.size());
 }
 
@@ -77,6 +79,27 @@ TEST(BvhGlbStream, EveryPlainFixtureGivesTheClipPathsBytes) {
     }
   }
   EXPECT_EQ(streamed, 2 * 7);
+}
+
+// The skin and stick-figure mesh (ExportOptions::gltf_skeleton) follow the streamed tracks in
+// the binary chunk; the file is still the clip path's, for every choice.
+TEST(BvhGlbStream, SkinChoicesGiveTheClipPathsBytes) {
+  int streamed = 0;
+  for (const GltfSkeleton choice : {GltfSkeleton::kNodes, GltfSkeleton::kSkin, GltfSkeleton::kSkinAndMesh}) {
+    ExportOptions export_options;
+    export_options.gltf_skeleton = choice;
+    for (const std::string& path : FixtureBvhFiles()) {
+      const std::string text = ReadText(path);
+      const Result<std::string> expected = ThroughTheClip(text, path, {}, export_options);
+      ASSERT_TRUE(expected.ok()) << path << ": " << expected.status().message();
+      const std::optional<std::string> got = Streamed(text, path, 0, {}, export_options);
+      if (!got) continue;
+      EXPECT_EQ(*got, *expected) << path << " choice " << static_cast<int>(choice);
+      EXPECT_EQ(got->find("mocapfill_skeleton") != std::string::npos, choice != GltfSkeleton::kNodes) << path;
+      ++streamed;
+    }
+  }
+  EXPECT_EQ(streamed, 3 * 7);
 }
 
 TEST(BvhGlbStream, TwoThreadsGiveTheSerialBytes) {

@@ -5,6 +5,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <map>
+#include <sstream>
 
 #include "formats/bvh/bvh_reader.h"
 #include "formats/bvh/bvh_writer.h"
@@ -70,6 +72,101 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, BvhFixtureRoundTrip,
                          [](const ::testing::TestParamInfo<std::string>& param) {
                            return param.param.substr(0, param.param.find('.'));
                          });
+
+// The standard layout (--bvh-layout standard): three rotations on every joint; positions only
+// on joints that move, over a zero OFFSET, so that a reader adding position channels to the
+// OFFSET (three.js) and one replacing it (ours) read the same motion. Bandai-Namco's files
+// carry positions on all 22 joints; only Hips moves (joint_Root above it is static).
+// Each joint's OFFSET and CHANNELS as written, by name (End Sites left out).
+struct WrittenJoint {
+  Eigen::Vector3d offset = Eigen::Vector3d::Constant(NAN);
+  std::vector<std::string> channels;
+};
+std::map<std::string, WrittenJoint> WrittenJoints(const std::string& text) {
+  std::map<std::string, WrittenJoint> joints;
+  std::istringstream in(text.substr(0, text.find("MOTION")));
+  std::string line;
+  WrittenJoint* current = nullptr;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "ROOT" || keyword == "JOINT") {
+      std::string name;
+      words >> name;
+      current = &joints[name];
+    } else if (keyword == "End") {
+      current = nullptr;
+    } else if (keyword == "OFFSET" && current != nullptr) {
+      words >> current->offset.x() >> current->offset.y() >> current->offset.z();
+    } else if (keyword == "CHANNELS" && current != nullptr) {
+      int count = 0;
+      words >> count;
+      current->channels.resize(count);
+      for (std::string& c : current->channels) words >> c;
+    }
+  }
+  return joints;
+}
+
+class BvhStandardLayout : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BvhStandardLayout, PositionsOnlyOnMovingJointsOverZeroOffsets) {
+  const Result<Scene> source = ReadFixture(GetParam());
+  ASSERT_TRUE(source.ok()) << source.status().message();
+  ExportOptions standard;
+  standard.bvh_layout = BvhLayout::kStandard;
+  std::string text;
+  const Result<Scene> back = RoundTrip(*source, &text, {}, standard);
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  const MotionClip& clip = source->clips[0];
+  const std::map<std::string, WrittenJoint> written = WrittenJoints(text);
+  ASSERT_EQ(written.size(), static_cast<size_t>(source->skeleton.num_joints()));
+  int moving = 0;
+  for (int j = 0; j < source->skeleton.num_joints(); ++j) {
+    const std::string& name = source->skeleton.name(j);
+    bool moves = false;
+    for (int f = 1; f < clip.num_frames; ++f) moves = moves || clip.translation(f, j) != clip.translation(0, j);
+    ASSERT_TRUE(written.count(name)) << name;
+    const WrittenJoint& w = written.at(name);
+    ASSERT_EQ(w.channels.size(), moves ? 6u : 3u) << name;
+    for (size_t k = 0; k < w.channels.size(); ++k)
+      EXPECT_NE(w.channels[k].find(k + 3 < w.channels.size() ? "position" : "rotation"), std::string::npos)
+          << name << " " << w.channels[k];
+    if (moves) {
+      EXPECT_EQ(w.offset, Eigen::Vector3d::Zero()) << name;
+      ++moving;
+    }
+  }
+  EXPECT_GT(moving, 0);
+  EXPECT_LT(WorstWorldDistanceM(*source, *back), 1e-9);
+  const testing::MotionDifference d = testing::CompareMotion(*source, *back);
+  EXPECT_LT(d.rotation_deg, kRoundTripRotationToleranceDeg);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, BvhStandardLayout,
+                         ::testing::Values("cmu_01_01_short.bvh", "bandai_walk_normal_001_short.bvh",
+                                           "boxing_toes_short.bvh", "cmu_mixed_orders.bvh", "cmu_two_roots.bvh",
+                                           "boxing_interleaved.bvh"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return param.param.substr(0, param.param.find('.'));
+                         });
+
+TEST(BvhStandardLayout, BandaiNamcoKeepsPositionsOnHipsAlone) {
+  const Result<Scene> source = ReadFixture("bandai_walk_normal_001_short.bvh");
+  ASSERT_TRUE(source.ok());
+  ExportOptions standard;
+  standard.bvh_layout = BvhLayout::kStandard;
+  const Result<std::string> text = WriteBvh(*source, standard);
+  ASSERT_TRUE(text.ok());
+  EXPECT_NE(text->find("ROOT joint_Root\n{\n\tOFFSET"), std::string::npos);
+  EXPECT_NE(text->find("JOINT Hips\n\t{\n\t\tOFFSET 0 0 0\n\t\tCHANNELS 6 Xposition Yposition Zposition"),
+            std::string::npos)
+      << text->substr(0, 400);
+  size_t six = 0;
+  for (size_t at = text->find("CHANNELS 6"); at != std::string::npos; at = text->find("CHANNELS 6", at + 1)) ++six;
+  EXPECT_EQ(six, 1u);
+}
 
 TEST(BvhWriter, WritesTheSourceNumbersBack) {
   // cmu_01_01_short keeps its principal-branch angles, so every value comes back as written,

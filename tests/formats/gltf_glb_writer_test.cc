@@ -95,13 +95,21 @@ TEST(GlbWriter, SkeletonWithoutClipsHasNoBinaryChunk) {
   scene.clips.clear();
   scene.meshes.clear();
   scene.skins.clear();
-  Result<GlbFile> glb = WriteGlb(scene, {});
+  // Bare nodes: the default skin's inverse bind matrices would fill a binary chunk.
+  ExportOptions bare;
+  bare.gltf_skeleton = GltfSkeleton::kNodes;
+  Result<GlbFile> glb = WriteGlb(scene, bare);
   ASSERT_TRUE(glb.ok()) << glb.status().message();
   EXPECT_TRUE(glb->bin.empty());
   ExpectConsistentGlb(*glb);
-  Result<std::string> whole = WriteGltf(scene, true, {});
+  Result<std::string> whole = WriteGltf(scene, true, bare);
   ASSERT_TRUE(whole.ok());
   EXPECT_EQ(*whole, glb->head);
+  // With the skin: its matrices are the whole binary chunk.
+  Result<GlbFile> skinned = WriteGlb(scene, {});
+  ASSERT_TRUE(skinned.ok());
+  EXPECT_EQ(skinned->bin.size(), 64u * scene.skeleton.num_joints());
+  ExpectConsistentGlb(*skinned);
 }
 
 }  // namespace

@@ -20,5 +20,6 @@ mocapfill_add_test(gltf_tests
           ${CMAKE_CURRENT_LIST_DIR}/gltf_linking_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_glb_writer_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/gltf_tracks_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/gltf_skeleton_skin_test.cc
   LIBS ${MOCAPFILL_GLTF_TEST_DRACO} mocapfill_test_gltf mocapfill_gltf mocapfill_formats mocapfill_format_common mocapfill_bvh
        nlohmann_json::nlohmann_json mocapfill_test_tinygltf)
