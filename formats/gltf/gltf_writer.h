@@ -1,5 +1,7 @@
-// glTF 2.0 export: joints as nodes, one shared time accessor per clip, metres, Y-up,
-// provenance in asset.extras, deterministic bytes. Validator-clean by construction.
+// glTF 2.0 export: joints as nodes (with a skin over them, and optionally a stick-figure
+// mesh, when the scene has no skinned mesh: ExportOptions::gltf_skeleton), one shared time
+// accessor per clip, metres, Y-up, provenance in asset.extras, deterministic bytes.
+// Validator-clean by construction.
 #pragma once
 
 #include <string>
