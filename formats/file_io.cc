@@ -85,6 +85,13 @@ Result<Bytes> ReadWhole(const std::string& path) {
 
 }  // namespace
 
+Result<InlineOrFileText> ReadInlineJsonOrFile(const std::string& value, const std::string& option) {
+  const size_t first = value.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && value[first] == '{') return InlineOrFileText{value, option};
+  ASSIGN_OR_RETURN(std::string text, ReadFileBytes(value));
+  return InlineOrFileText{std::move(text), value};
+}
+
 Result<std::string> ReadFileBytes(const std::string& path) { return ReadWhole<std::string>(path); }
 
 Result<LargeBuffer> ReadFileToBuffer(const std::string& path) { return ReadWhole<LargeBuffer>(path); }

@@ -18,6 +18,15 @@ namespace mocapfill {
 
 // Reads the whole file. Fails with kIoError naming the path.
 Result<std::string> ReadFileBytes(const std::string& path);
+
+// An option value that is either inline JSON (its first non-blank character is '{') or the
+// path of a file holding it: the text, and what messages about it should name (`option` for
+// inline text, else the path). Fails as ReadFileBytes.
+struct InlineOrFileText {
+  std::string text;
+  std::string origin;
+};
+Result<InlineOrFileText> ReadInlineJsonOrFile(const std::string& value, const std::string& option);
 // The same into a LargeBuffer: for motion files, which may be megabytes.
 Result<LargeBuffer> ReadFileToBuffer(const std::string& path);
 

@@ -79,10 +79,8 @@ Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& 
 }
 
 Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& inline_or_path, const std::string& option) {
-  const size_t first = inline_or_path.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && inline_or_path[first] == '{') return ParseJointNameMap(inline_or_path, option);
-  ASSIGN_OR_RETURN(const std::string text, ReadFileBytes(inline_or_path));
-  return ParseJointNameMap(text, inline_or_path);
+  ASSIGN_OR_RETURN(const InlineOrFileText map, ReadInlineJsonOrFile(inline_or_path, option));
+  return ParseJointNameMap(map.text, map.origin);
 }
 
 Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& paths, const DatabaseBuildOptions& options,

@@ -44,10 +44,8 @@ struct FillArgs {
 // --map: inline JSON (starting with '{') or a JSON file.
 Result<std::map<std::string, std::string>> ReadMapArg(const std::string& arg) {
   if (arg.empty()) return std::map<std::string, std::string>{};
-  const size_t first = arg.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && arg[first] == '{') return ParseRigMapJson(arg, "--map");
-  ASSIGN_OR_RETURN(const std::string bytes, ReadFileBytes(arg));
-  return ParseRigMapJson(bytes, arg);
+  ASSIGN_OR_RETURN(const InlineOrFileText map, ReadInlineJsonOrFile(arg, "--map"));
+  return ParseRigMapJson(map.text, map.origin);
 }
 
 void PrintSummary(const SketchFillResult& result) {
@@ -164,7 +162,7 @@ int RunFill(FillArgs& args) {
   const Status measured = MeasureWrittenKeys(args.output, *scene, *filled);
   if (!measured.ok()) return Fail(measured, Stage::kProcessing);
   const std::string db_name = args.db.empty() ? "default" : args.db[0];
-  const std::string report = FillReportJson(*filled, db_name, load_s);
+  const std::string report = args.report.empty() && !args.json ? "" : FillReportJson(*filled, db_name, load_s);
   if (!args.report.empty()) {
     const Status written_report = WriteFileAtomic(args.report, report + "\n");
     if (!written_report.ok()) return Fail(written_report, Stage::kOutput);

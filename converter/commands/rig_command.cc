@@ -4,14 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "converter/commands.h"
 #include "converter/console.h"
 #include "converter/exit_codes.h"
 #include "converter/import_flags.h"
+#include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "processing/retargeting/proportions.h"
 #include "processing/retargeting/rest_pose.h"
@@ -32,12 +31,8 @@ struct RigShowArgs {
 // The --map value: inline JSON when it starts with '{', else a file to read.
 Result<std::map<std::string, std::string>> ReadMap(const std::string& value) {
   if (value.empty()) return std::map<std::string, std::string>{};
-  if (value.front() == '{') return ParseRigMapJson(value, "--map");
-  std::ifstream in(value, std::ios::binary);
-  if (!in) return IoError(value + ": cannot read the rig map");
-  std::stringstream text;
-  text << in.rdbuf();
-  return ParseRigMapJson(text.str(), value);
+  ASSIGN_OR_RETURN(const InlineOrFileText map, ReadInlineJsonOrFile(value, "--map"));
+  return ParseRigMapJson(map.text, map.origin);
 }
 
 struct RigReport {
