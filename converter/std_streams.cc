@@ -14,9 +14,18 @@ namespace mocapfill::cli {
 
 bool IsStdStream(const std::string& path) { return path == "-"; }
 
-Result<TemporaryFile> TemporaryFile::Create(const std::string& extension) {
+namespace {
+
+// "$TMPDIR/mocapfill-XXXXXX" (or under /tmp): the pattern mkstemps and mkdtemp fill in.
+std::string TemporaryPattern() {
   const char* dir = std::getenv("TMPDIR");
-  std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/mocapfill-XXXXXX." + extension;
+  return std::string(dir && *dir ? dir : "/tmp") + "/mocapfill-XXXXXX";
+}
+
+}  // namespace
+
+Result<TemporaryFile> TemporaryFile::Create(const std::string& extension) {
+  const std::string pattern = TemporaryPattern() + "." + extension;
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemps(name.data(), static_cast<int>(extension.size() + 1));
@@ -26,8 +35,7 @@ Result<TemporaryFile> TemporaryFile::Create(const std::string& extension) {
 }
 
 Result<TemporaryFile> TemporaryFile::CreateNamed(const std::string& name) {
-  const char* dir = std::getenv("TMPDIR");
-  std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/mocapfill-XXXXXX";
+  const std::string pattern = TemporaryPattern();
   std::vector<char> folder(pattern.begin(), pattern.end());
   folder.push_back('\0');
   if (::mkdtemp(folder.data()) == nullptr)
