@@ -116,4 +116,50 @@ Eigen::Vector3d LogMap(const Eigen::Quaterniond& q_in) {
   return q.vec() * (angle / s);
 }
 
+double WrapToPi(double angle) {
+  angle = std::remainder(angle, 2.0 * kPi);
+  return angle <= -kPi ? angle + 2.0 * kPi : angle;
+}
+
+Eigen::Quaterniond NormalisedOrSeed(const Eigen::Vector4d& sum, const Eigen::Quaterniond& seed) {
+  if (sum.norm() < 1e-12) return seed;
+  Eigen::Quaterniond q;
+  q.coeffs() = sum.normalized();
+  return q;
+}
+
+void AccumulateSignAligned(const Eigen::Quaterniond& q, const Eigen::Quaterniond& seed, Eigen::Vector4d& sum) {
+  if (q.coeffs().dot(seed.coeffs()) < 0.0) {
+    sum -= q.coeffs();
+  } else {
+    sum += q.coeffs();
+  }
+}
+
+Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations) {
+  if (rotations.empty()) return Eigen::Quaterniond::Identity();
+  Eigen::Quaterniond seed = rotations.front();
+  for (int pass = 0; pass < 2; ++pass) {
+    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
+    for (const Eigen::Quaterniond& q : rotations) AccumulateSignAligned(q, seed, sum);
+    seed = NormalisedOrSeed(sum, seed);
+  }
+  return seed.normalized();
+}
+
+void SplitHeading(const Eigen::Quaterniond& world, double& heading_rad, Eigen::Quaterniond& tilt) {
+  const double w = world.w(), y = world.y();
+  if (w * w + y * y < 1e-24) {
+    heading_rad = 0.0;
+    tilt = world;
+    return;
+  }
+  heading_rad = WrapToPi(2.0 * std::atan2(y, w));
+  tilt = (YawRotation(-heading_rad) * world).normalized();
+}
+
+Eigen::Quaterniond YawRotation(double angle_rad) {
+  return Eigen::Quaterniond(std::cos(0.5 * angle_rad), 0.0, std::sin(0.5 * angle_rad), 0.0);
+}
+
 }  // namespace mocapfill

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,5 +50,26 @@ Eigen::Vector3d LogMap(const Eigen::Quaterniond& q);
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegPerRad = 180.0 / kPi;
 constexpr double kRadPerDeg = kPi / 180.0;
+
+// Mean of unit quaternions (algorithms.md 1.2): sign-align every quaternion to a seed (the
+// first one), average the components, normalise; repeat once with the result as seed.
+// Returns identity for an empty input or when the average vanishes.
+Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations);
+
+// Splits a world rotation into R = Ry(heading) * tilt, where tilt has no twist about +Y
+// (its quaternion has a zero y component; swing-twist decomposition about the up axis).
+// heading_rad is in (-pi, pi]; it is 0 in the degenerate case of a 180-degree swing.
+void SplitHeading(const Eigen::Quaterniond& world, double& heading_rad, Eigen::Quaterniond& tilt);
+
+// The angle in (-pi, pi] that equals `angle` modulo 2 pi.
+double WrapToPi(double angle);
+
+// Rotation about +Y by `angle_rad`.
+Eigen::Quaterniond YawRotation(double angle_rad);
+
+// Building blocks of MeanRotation, for callers that average many tracks in one pass: adds q
+// (sign-aligned to seed) to a component sum; the normalised sum, or the seed when it vanishes.
+void AccumulateSignAligned(const Eigen::Quaterniond& q, const Eigen::Quaterniond& seed, Eigen::Vector4d& sum);
+Eigen::Quaterniond NormalisedOrSeed(const Eigen::Vector4d& sum, const Eigen::Quaterniond& seed);
 
 }  // namespace mocapfill

@@ -8,24 +8,6 @@ namespace mocapfill {
 
 namespace {
 
-// Sign-aligned component sums of unit quaternions, the building block of the mean
-// (algorithms.md 1.2): sign-align to a seed, sum, normalise; done twice, the second time
-// seeded with the first result.
-Eigen::Quaterniond NormalisedOrSeed(const Eigen::Vector4d& sum, const Eigen::Quaterniond& seed) {
-  if (sum.norm() < 1e-12) return seed;
-  Eigen::Quaterniond q;
-  q.coeffs() = sum.normalized();
-  return q;
-}
-
-void AccumulateAligned(const Eigen::Quaterniond& q, const Eigen::Quaterniond& seed, Eigen::Vector4d& sum) {
-  if (q.coeffs().dot(seed.coeffs()) < 0.0) {
-    sum -= q.coeffs();
-  } else {
-    sum += q.coeffs();
-  }
-}
-
 // World transform of joint j's parent at `frame` (identity for a root): the frame in which
 // j's local transform lives. Follows ComputeWorldPose, including the parent's rest scale.
 struct ParentFrame {
@@ -49,11 +31,6 @@ ParentFrame ParentFrameOf(const Skeleton& skeleton, const MotionClip& clip, int 
     frame_out.scale = skeleton.joint(a).rest_scale;
   }
   return frame_out;
-}
-
-double WrapToPi(double angle) {
-  angle = std::remainder(angle, 2.0 * kPi);
-  return angle <= -kPi ? angle + 2.0 * kPi : angle;
 }
 
 }  // namespace
@@ -82,32 +59,6 @@ int FindMotionRoot(const Skeleton& skeleton, std::span<const MotionClip* const> 
   return roots.empty() ? -1 : roots.front();
 }
 
-Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations) {
-  if (rotations.empty()) return Eigen::Quaterniond::Identity();
-  Eigen::Quaterniond seed = rotations.front();
-  for (int pass = 0; pass < 2; ++pass) {
-    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-    for (const Eigen::Quaterniond& q : rotations) AccumulateAligned(q, seed, sum);
-    seed = NormalisedOrSeed(sum, seed);
-  }
-  return seed.normalized();
-}
-
-void SplitHeading(const Eigen::Quaterniond& world, double& heading_rad, Eigen::Quaterniond& tilt) {
-  const double w = world.w(), y = world.y();
-  if (w * w + y * y < 1e-24) {
-    heading_rad = 0.0;
-    tilt = world;
-    return;
-  }
-  heading_rad = WrapToPi(2.0 * std::atan2(y, w));
-  tilt = (YawRotation(-heading_rad) * world).normalized();
-}
-
-Eigen::Quaterniond YawRotation(double angle_rad) {
-  return Eigen::Quaterniond(std::cos(0.5 * angle_rad), 0.0, std::sin(0.5 * angle_rad), 0.0);
-}
-
 TangentReference ComputeTangentReference(const Skeleton& skeleton, std::span<const MotionClip* const> clips,
                                          int root_joint) {
   const int joints = skeleton.num_joints();
@@ -122,7 +73,7 @@ TangentReference ComputeTangentReference(const Skeleton& skeleton, std::span<con
     std::vector<Eigen::Vector4d> sums(joints, Eigen::Vector4d::Zero());
     for (const MotionClip* clip : clips)
       for (int f = 0; f < clip->num_frames; ++f)
-        for (int j = 0; j < joints; ++j) AccumulateAligned(clip->rotation(f, j), seeds[j], sums[j]);
+        for (int j = 0; j < joints; ++j) AccumulateSignAligned(clip->rotation(f, j), seeds[j], sums[j]);
     for (int j = 0; j < joints; ++j) seeds[j] = NormalisedOrSeed(sums[j], seeds[j]);
   }
   for (int j = 0; j < joints; ++j) reference.joint_means[j] = seeds[j].normalized();

@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "processing/core/rotation.h"
 #include "processing/core/motion_clip.h"
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
@@ -37,19 +38,6 @@ struct TangentReference {
 // the static-looking "joint_Root" above it translates too); otherwise the first translating
 // joint; for a chain without branches where nothing translates, the first root.
 int FindMotionRoot(const Skeleton& skeleton, std::span<const MotionClip* const> clips);
-
-// Mean of unit quaternions (algorithms.md 1.2): sign-align every quaternion to a seed (the
-// first one), average the components, normalise; repeat once with the result as seed.
-// Returns identity for an empty input or when the average vanishes.
-Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations);
-
-// Splits a world rotation into R = Ry(heading) * tilt, where tilt has no twist about +Y
-// (its quaternion has a zero y component; swing-twist decomposition about the up axis).
-// heading_rad is in (-pi, pi]; it is 0 in the degenerate case of a 180-degree swing.
-void SplitHeading(const Eigen::Quaterniond& world, double& heading_rad, Eigen::Quaterniond& tilt);
-
-// Rotation about +Y by `angle_rad`.
-Eigen::Quaterniond YawRotation(double angle_rad);
 
 // Reference rotations of the clips (each joint's MeanRotation over every frame of every
 // clip; the root's entry from its world tilts). All clips must be valid for `skeleton`.
