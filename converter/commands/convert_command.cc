@@ -323,9 +323,9 @@ void AddConvertCommand(CLI::App& app, CommandAction& action) {
                       "Put the motion onto this character's rig (.bvh .gltf .glb .fbx); the output is the character "
                       "(its meshes and skins) with the motion");
   command->add_option("--retarget-rest", args->retarget_rest,
-                      "The character's rest pose: auto (bind pose of a skin, else zero pose, else first frame), bind, "
-                      "zero or first-frame")
-      ->check(CLI::IsMember({"auto", "bind", "zero", "first-frame"}))
+                      "The character's rest pose: auto (bind pose of a skin, else zero pose, else mean pose of its "
+                      "clip, else first frame), bind, zero, mean or first-frame")
+      ->check(CLI::IsMember(RestSourceNames()))
       ->capture_default_str();
   command->add_option("--from", args->from, "Format of a - input (standard input): bvh, gltf, glb or fbx")
       ->check(CLI::IsMember({"bvh", "gltf", "glb", "fbx"}));

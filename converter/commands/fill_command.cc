@@ -21,6 +21,7 @@
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
 #include "library/fill_report_json.h"
+#include "processing/retargeting/rest_pose.h"
 #include "processing/retargeting/rig_mapping.h"
 #include "processing/sketch_fill/sketch_fill.h"
 #include "processing/synthesis/coverage.h"
@@ -203,8 +204,9 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--map", args->map,
                       "Rig map overrides, inline JSON or a JSON file: {\"sketch joint\": \"canonical bone or database "
                       "joint\", ...} (\"\" leaves a joint unmapped); the rest is mapped automatically");
-  command->add_option("--rest", args->rest, "The sketch rig's rest pose: auto, bind, zero or first-frame")
-      ->check(CLI::IsMember({"auto", "bind", "zero", "first-frame"}))
+  command->add_option("--rest", args->rest, "The sketch rig's rest pose: auto (bind pose of a skin, else zero pose, else the "
+                      "sketch's mean pose, else its first frame), bind, zero, mean or first-frame")
+      ->check(CLI::IsMember(RestSourceNames()))
       ->capture_default_str();
   command->add_option("--position-keys", args->position_keys,
                       "Joints whose translation keys are world-space position targets (comma-separated)");

@@ -147,7 +147,9 @@ void AddRigCommand(CLI::App& app, CommandAction& action) {
   show->add_option("input", args->input, "Input file (.bvh .gltf .glb .fbx)")->required();
   show->add_flag("--json", args->json, "Print a JSON report instead of text");
   show->add_option("--map", args->map, "Rig map: inline JSON {\"joint\": \"bone\"} or a JSON file");
-  show->add_option("--rest", args->rest, "Rest pose: auto, bind, zero or first-frame")->default_str("auto");
+  show->add_option("--rest", args->rest, "Rest pose: auto, bind, zero, mean or first-frame")
+      ->check(CLI::IsMember(RestSourceNames()))
+      ->default_str("auto");
   AddImportFlags(*show, args->import);
   show->footer(
       "Examples:\n"

@@ -12,7 +12,7 @@ namespace mocapfill::api {
 
 struct RigOptions {
   std::map<std::string, std::string> map;  // joint -> canonical bone (VRM name) overrides
-  std::string rest = "auto";               // auto, bind, zero, first-frame
+  std::string rest = "auto";               // auto, bind, zero, mean, first-frame
 };
 
 // `motion`'s clips on `character`'s rig, in `character`'s scene (its meshes and skins kept).

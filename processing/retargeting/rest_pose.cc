@@ -2,14 +2,20 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
+
+#include "processing/core/rotation.h"
 
 namespace mocapfill {
 
 namespace {
 
 using B = HumanoidBone;
+
+constexpr std::array<RestSource, 5> kRestSources = {RestSource::kAuto, RestSource::kBind, RestSource::kZero,
+                                                    RestSource::kMean, RestSource::kFirstFrame};
 
 struct WorldTransform {
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
@@ -90,6 +96,12 @@ RigRest BindPose(const Scene& scene, const Skin& skin) {
   return rest;
 }
 
+// The mean pose of the scene's first clip, its root at the mapped hips.
+RigRest ClipMeanPose(const Scene& scene, const RigMapping& mapping) {
+  const int root = mapping.joint(HumanoidBone::kHips);
+  return MeanPoseRest(scene.skeleton, ClipJointMeans(scene.skeleton, scene.clips.front(), root), root);
+}
+
 RigRest FirstFrame(const Scene& scene) {
   const MotionClip& clip = scene.clips.front();
   RigRest rest;
@@ -101,6 +113,13 @@ RigRest FirstFrame(const Scene& scene) {
   return rest;
 }
 
+// World rotation of `joint`'s parent at frame f (identity for a root).
+Eigen::Quaterniond ParentWorldRotation(const Skeleton& skeleton, const MotionClip& clip, int f, int joint) {
+  Eigen::Quaterniond world = Eigen::Quaterniond::Identity();
+  for (int p = skeleton.parent(joint); p != kNoParent; p = skeleton.parent(p)) world = clip.rotation(f, p) * world;
+  return world;
+}
+
 }  // namespace
 
 const char* RestSourceName(RestSource source) {
@@ -108,15 +127,22 @@ const char* RestSourceName(RestSource source) {
     case RestSource::kAuto: return "auto";
     case RestSource::kBind: return "bind";
     case RestSource::kZero: return "zero";
+    case RestSource::kMean: return "mean";
     case RestSource::kFirstFrame: return "first-frame";
   }
   return "auto";
 }
 
 Result<RestSource> ParseRestSource(std::string_view text) {
-  for (RestSource s : {RestSource::kAuto, RestSource::kBind, RestSource::kZero, RestSource::kFirstFrame})
+  for (RestSource s : kRestSources)
     if (text == RestSourceName(s)) return s;
-  return InvalidArgument("unknown rest pose '" + std::string(text) + "' (expected auto, bind, zero or first-frame)");
+  return InvalidArgument("unknown rest pose '" + std::string(text) + "' (expected auto, bind, zero, mean or first-frame)");
+}
+
+std::vector<std::string> RestSourceNames() {
+  std::vector<std::string> names;
+  for (RestSource s : kRestSources) names.push_back(RestSourceName(s));
+  return names;
 }
 
 std::vector<Eigen::Vector3d> RigRest::WorldPositions(const Skeleton& skeleton) const {
@@ -139,6 +165,36 @@ RigRest ZeroPose(const Skeleton& skeleton) {
   }
   rest.source = RestSource::kZero;
   return rest;
+}
+
+RigRest MeanPoseRest(const Skeleton& skeleton, const std::vector<Eigen::Quaterniond>& joint_means, int root_joint) {
+  RigRest rest = ZeroPose(skeleton);
+  for (int j = 0; j < skeleton.num_joints(); ++j)
+    if (j != root_joint) rest.local_rotations[j] = joint_means[j];
+  if (root_joint >= 0) {
+    Eigen::Quaterniond parent = Eigen::Quaterniond::Identity();
+    for (int p = skeleton.parent(root_joint); p != kNoParent; p = skeleton.parent(p))
+      parent = rest.local_rotations[p] * parent;
+    rest.local_rotations[root_joint] = (parent.conjugate() * joint_means[root_joint]).normalized();
+  }
+  rest.source = RestSource::kMean;
+  return rest;
+}
+
+std::vector<Eigen::Quaterniond> ClipJointMeans(const Skeleton& skeleton, const MotionClip& clip, int root_joint) {
+  std::vector<Eigen::Quaterniond> means(skeleton.num_joints());
+  std::vector<Eigen::Quaterniond> track(clip.num_frames);
+  for (int j = 0; j < skeleton.num_joints(); ++j) {
+    for (int f = 0; f < clip.num_frames; ++f) {
+      track[f] = clip.rotation(f, j);
+      if (j == root_joint) {
+        double heading = 0.0;
+        SplitHeading(ParentWorldRotation(skeleton, clip, f, j) * track[f], heading, track[f]);
+      }
+    }
+    means[j] = MeanRotation(track);
+  }
+  return means;
 }
 
 bool IsStandingPose(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& pose) {
@@ -191,6 +247,13 @@ Result<RigRest> ChooseRest(const Scene& scene, const RigMapping& mapping, RestSo
     rest.reason = "asked for: frame 0 of clip '" + scene.clips.front().name + "'";
     return rest;
   }
+  if (source == RestSource::kMean) {
+    if (scene.clips.empty() || scene.clips.front().num_frames == 0)
+      return InvalidData("no clip: no mean pose to take as the rest pose");
+    RigRest rest = ClipMeanPose(scene, mapping);
+    rest.reason = "asked for: the mean pose of clip '" + scene.clips.front().name + "'";
+    return rest;
+  }
   if (source == RestSource::kZero) {
     RigRest rest = ZeroPose(skeleton);
     rest.reason = "asked for: the skeleton's own rest (zero) pose";
@@ -209,16 +272,23 @@ Result<RigRest> ChooseRest(const Scene& scene, const RigMapping& mapping, RestSo
     return zero;
   }
   if (!scene.clips.empty() && scene.clips.front().num_frames > 0) {
+    const std::string clip = "clip '" + scene.clips.front().name + "'";
+    RigRest mean = ClipMeanPose(scene, mapping);
+    const std::string mean_problem = StandingProblem(skeleton, mapping, mean);
+    if (mean_problem.empty()) {
+      mean.reason = "the zero pose is no standing pose (" + zero_problem + "): the mean pose of " + clip + " stands";
+      return mean;
+    }
     RigRest first = FirstFrame(scene);
     const std::string first_problem = StandingProblem(skeleton, mapping, first);
     if (first_problem.empty()) {
-      first.reason = "the zero pose is no standing pose (" + zero_problem + "): frame 0 of clip '" +
-                     scene.clips.front().name + "' stands";
+      first.reason = "neither the zero pose (" + zero_problem + ") nor the mean pose of " + clip + " (" +
+                     mean_problem + ") stands: frame 0 of " + clip + " does";
       return first;
     }
     return InvalidData("no usable rest pose: no skin covers the required bones, the zero pose is no standing pose (" +
-                       zero_problem + ") and neither is frame 0 (" + first_problem +
-                       "); choose one with --rest bind|zero|first-frame");
+                       zero_problem + "), nor is the mean pose (" + mean_problem + ") or frame 0 (" + first_problem +
+                       "); choose one with --rest bind|zero|mean|first-frame");
   }
   return InvalidData("no usable rest pose: no skin covers the required bones, no clip, and the zero pose is no standing pose (" +
                      zero_problem + "); choose one with --rest zero");

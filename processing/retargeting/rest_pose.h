@@ -1,8 +1,11 @@
 // A rig's rest pose: the pose its joints' local frames are measured from when retargeting.
 // Where a skin gives one, the bind pose (inverse bind matrices); else the skeleton's own
-// rest (zero) pose; or the first frame of a clip. The automatic choice falls back to the
-// first frame when the zero pose is no standing pose at all (every Bandai-Namco bone points
-// along +X when its rotations are zero).
+// rest (zero) pose; else the mean pose of a clip (or of a database); or the first frame of
+// a clip. The automatic choice falls back to the mean pose when the zero pose is no standing
+// pose at all (every Bandai-Namco bone points along +X when its rotations are zero): a
+// capture's mean pose is much the same in every take and in the database built from them,
+// while its first frame holds whatever step or turn the take begins with, and each bone's
+// twist in the rest becomes its twist in the canonical T-pose.
 #pragma once
 
 #include <Eigen/Core>
@@ -17,11 +20,13 @@
 
 namespace mocapfill {
 
-enum class RestSource { kAuto, kBind, kZero, kFirstFrame };
+enum class RestSource { kAuto, kBind, kZero, kMean, kFirstFrame };
 
-// "auto", "bind", "zero", "first-frame".
+// "auto", "bind", "zero", "mean", "first-frame".
 const char* RestSourceName(RestSource source);
 Result<RestSource> ParseRestSource(std::string_view text);
+// Every name ParseRestSource accepts, "auto" first (for option checks and help texts).
+std::vector<std::string> RestSourceNames();
 
 struct RigRest {
   std::vector<Eigen::Quaterniond> local_rotations;  // per joint
@@ -44,9 +49,20 @@ bool IsStandingPose(const Skeleton& skeleton, const RigMapping& mapping, const R
 // when it does (IsStandingPose is this being empty).
 std::string StandingProblem(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& pose);
 
+// A mean pose as a rest: every joint at its mean local rotation (`joint_means`, per joint),
+// except `root_joint` (-1: none), whose entry is its mean world tilt (heading removed, as
+// ComputeTangentReference and the database store it): the root stands upright at that tilt
+// facing no particular way. Local translations are the skeleton's.
+RigRest MeanPoseRest(const Skeleton& skeleton, const std::vector<Eigen::Quaterniond>& joint_means, int root_joint);
+
+// The joint means of one clip in MeanPoseRest's form (MeanRotation per joint over every
+// frame; the root's mean world tilt).
+std::vector<Eigen::Quaterniond> ClipJointMeans(const Skeleton& skeleton, const MotionClip& clip, int root_joint);
+
 // Chooses the rest pose of `scene`'s skeleton. kBind needs a skin (joints outside every skin
-// keep their zero-pose rotations, placed relative to the bound ones), kFirstFrame a clip;
-// kAuto takes bind, else zero, else first frame (when zero is no standing pose).
+// keep their zero-pose rotations, placed relative to the bound ones), kMean and kFirstFrame
+// a clip (the first; kMean's root is the mapped hips); kAuto takes bind, else zero, else
+// mean, else first frame (each only when it stands).
 // Errors (kInvalidData): the source asked for is not available, or no candidate stands.
 Result<RigRest> ChooseRest(const Scene& scene, const RigMapping& mapping, RestSource source);
 

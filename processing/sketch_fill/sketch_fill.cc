@@ -21,20 +21,11 @@ namespace {
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-// The database's mean pose as its rest: mean local rotations, the motion root upright at
-// the mean tilt with no heading. Database clips are captures of a standing performer, so this
-// pose stands even where the skeleton's zero pose does not.
+// The database's mean pose as its rest (MeanPoseRest): database clips are captures of a
+// standing performer, so this pose stands even where the skeleton's zero pose does not, and
+// a capture of the same rig read elsewhere gets much the same rest (ChooseRest's mean pose).
 RigRest DatabaseRest(const MotionDatabase& db) {
-  RigRest rest = ZeroPose(db.skeleton());
-  const Skeleton& s = db.skeleton();
-  for (int j = 0; j < s.num_joints(); ++j)
-    if (j != db.root_joint()) rest.local_rotations[j] = db.joint_means()[j];
-  if (db.root_joint() >= 0) {
-    Quaterniond parent = Quaterniond::Identity();
-    for (int p = s.parent(db.root_joint()); p != kNoParent; p = s.parent(p)) parent = rest.local_rotations[p] * parent;
-    rest.local_rotations[db.root_joint()] = (parent.conjugate() * db.joint_means()[db.root_joint()]).normalized();
-  }
-  rest.source = RestSource::kZero;
+  RigRest rest = MeanPoseRest(db.skeleton(), db.joint_means(), db.root_joint());
   rest.reason = "the database's mean pose";
   return rest;
 }

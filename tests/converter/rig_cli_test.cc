@@ -46,7 +46,13 @@ TEST(RigCli, MapAndRestOptions) {
   EXPECT_EQ(nlohmann::json::parse(r.output)["rest"]["source"], "zero");
   r = RunCli("rig show --json " + bandai);
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(nlohmann::json::parse(r.output)["rest"]["source"], "mean");
+  r = RunCli("rig show --json --rest first-frame " + bandai);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(nlohmann::json::parse(r.output)["rest"]["source"], "first-frame");
+  r = RunCli("rig show --json --rest middle " + bandai);
+  EXPECT_EQ(r.exit_code, 1) << r.output;  // a usage error
+  EXPECT_NE(r.output.find("mean"), std::string::npos) << r.output;
   r = RunCli("rig show " + bandai + " --map '{\"Toes_L\": \"\"}'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("leftToes       \xE2\x80\x94"), std::string::npos) << r.output;

@@ -444,8 +444,13 @@ TEST(RestPose, BandaiZeroPoseIsNoStandingPose) {
   EXPECT_FALSE(IsStandingPose(s.skeleton, *m, ZeroPose(s.skeleton)));
   Result<RigRest> rest = ChooseRest(s, *m, RestSource::kAuto);
   ASSERT_TRUE(rest.ok()) << rest.status().message();
-  EXPECT_EQ(rest->source, RestSource::kFirstFrame);
+  EXPECT_EQ(rest->source, RestSource::kMean);
   EXPECT_NE(rest->reason.find("zero pose is no standing pose"), std::string::npos) << rest->reason;
+  EXPECT_NE(rest->reason.find("the mean pose of clip"), std::string::npos) << rest->reason;
+  EXPECT_TRUE(IsStandingPose(s.skeleton, *m, *rest));
+  Result<RigRest> first = ChooseRest(s, *m, RestSource::kFirstFrame);
+  ASSERT_TRUE(first.ok());
+  EXPECT_EQ(first->source, RestSource::kFirstFrame);
   const RigProportions prop = MeasureProportions(s.skeleton, *m, *rest);
   EXPECT_GT(prop.hip_height, 0.8);
   EXPECT_LT(prop.hip_height, 1.1);

@@ -43,7 +43,7 @@ OptionSpec MethodOption() {
 }
 
 OptionSpec RestOption() {
-  OptionSpec spec = StringOption("rest", "auto", {"auto", "bind", "zero", "first-frame"}, "the sketch rig's rest pose");
+  OptionSpec spec = StringOption("rest", "auto", RestSourceNames(), "the sketch rig's rest pose");
   spec.check = [](const OptionValue& v) { return ParseRestSource(v.text).status(); };
   return spec;
 }
