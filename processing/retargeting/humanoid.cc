@@ -101,14 +101,4 @@ Eigen::Vector3d CanonicalDirection(HumanoidBone bone) {
   return up;
 }
 
-Eigen::Vector3d CanonicalTwistReference(HumanoidBone bone) {
-  // Feet and toes point forward, so forward cannot fix their twist. Nor can up: a foot on
-  // tiptoe in a captured rest points nearly down, and a twist about a bone along its own
-  // reference is arbitrary. Feet swing in the sagittal plane, so the character's left, at
-  // right angles to it, fixes their twist in every stance.
-  if (bone == B::kLeftFoot || bone == B::kLeftToes || bone == B::kRightFoot || bone == B::kRightToes)
-    return Eigen::Vector3d::UnitX();
-  return Eigen::Vector3d::UnitZ();
-}
-
 }  // namespace mocapfill

@@ -52,10 +52,7 @@ HumanoidBone MirrorBone(HumanoidBone bone);
 
 // The canonical T-pose in the canonical frame (Y up, the character facing +Z, its left at
 // +X): the unit direction in which each bone points (towards its canonical child: legs
-// down, arms out to the sides, spine, neck and head up, feet and toes forward), and the
-// reference axis that fixes the twist about it (forward for bones that point up, down or
-// sideways; up for feet and toes).
+// down, arms out to the sides, spine, neck and head up, feet and toes forward).
 Eigen::Vector3d CanonicalDirection(HumanoidBone bone);
-Eigen::Vector3d CanonicalTwistReference(HumanoidBone bone);
 
 }  // namespace mocapfill

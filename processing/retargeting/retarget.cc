@@ -22,8 +22,7 @@ using Eigen::Vector3d;
 constexpr double kMinSegmentM = 1e-4;  // shorter offsets (end bones at their parent) show no direction
 
 // An orthonormal frame whose first axis is `d` and whose second lies in the plane of d and
-// `ref`. Two bones given the same (d, ref) get the same frame, which is what ties a rig's
-// rest bone to the canonical T-pose bone: the swing is d, the twist is fixed by ref.
+// `ref`: the pelvis's frame from its left-right axis and the world up.
 Matrix3d Frame(Vector3d d, const Vector3d& ref) {
   d.normalize();
   Vector3d r = ref - ref.dot(d) * d;
@@ -117,11 +116,26 @@ std::optional<Vector3d> RestDirection(const Skeleton& skeleton, const RigMapping
   return std::nullopt;
 }
 
+// The hips' height over the feet with the legs straight: the drop from the hips to the
+// upper legs plus the thigh and shin lengths (mean of the sides). Bone lengths do not change
+// with the pose, so two rests of one rig (a captured mean pose, a database's) agree, where
+// the height of a posed rest would follow its knee bend into the root's scale. Without a
+// full leg: the rest's hips above its lowest leg joint.
 double HipHeight(const RigMapping& mapping, const RestGeometry& rest) {
-  const double hips_y = rest.positions[mapping.joint(B::kHips)].y();
+  const auto at = [&](B b) { return rest.positions[mapping.joint(b)]; };
+  double sum = 0.0;
+  int sides = 0;
+  for (auto [upper, lower, foot] : {std::array{B::kLeftUpperLeg, B::kLeftLowerLeg, B::kLeftFoot},
+                                    std::array{B::kRightUpperLeg, B::kRightLowerLeg, B::kRightFoot}}) {
+    if (!mapping.has(upper) || !mapping.has(lower) || !mapping.has(foot)) continue;
+    sum += at(B::kHips).y() - at(upper).y() + (at(lower) - at(upper)).norm() + (at(foot) - at(lower)).norm();
+    ++sides;
+  }
+  if (sides > 0) return sum / sides;
+  const double hips_y = at(B::kHips).y();
   double lowest = hips_y;
   for (B b : {B::kLeftFoot, B::kRightFoot, B::kLeftToes, B::kRightToes, B::kLeftLowerLeg, B::kRightLowerLeg})
-    if (mapping.has(b)) lowest = std::min(lowest, rest.positions[mapping.joint(b)].y());
+    if (mapping.has(b)) lowest = std::min(lowest, at(b).y());
   return hips_y - lowest;
 }
 
@@ -256,8 +270,18 @@ Result<HumanoidRig> HumanoidRig::Make(const Skeleton& skeleton, const RigMapping
   for (int b = 0; b < kNumHumanoidBones; ++b) {
     rig.t_pose_[b] = Quaterniond::Identity();
     rig.aim_joint_[b] = -1;
-    const int j = mapping.joints[b];
-    if (j < 0) continue;
+  }
+  // The T-pose is built down the hierarchy: each mapped joint is first carried rigidly with
+  // the correction that straightened its nearest mapped ancestor, then swung the shortest
+  // way so that its bone points in the canonical direction. A bone's twist in the T-pose is
+  // therefore its twist relative to its parent in the rest, whatever the parent's pose: two
+  // rests of one rig that differ in a turn of the hips give the same leg twists, where a
+  // twist measured against world axes (Frame with a fixed reference per bone) carries the
+  // turn into every bone below it.
+  std::vector<Quaterniond> correction(n, Quaterniond::Identity());
+  for (int j = 0; j < n; ++j) {
+    const int b = mapping.BoneOfJoint(j);
+    if (b < 0) continue;
     const B bone = BoneAt(b);
     for (HumanoidBone next : DirectionBones(bone)) {
       if (!mapping.has(next)) continue;
@@ -271,21 +295,21 @@ Result<HumanoidRig> HumanoidRig::Make(const Skeleton& skeleton, const RigMapping
       if (skeleton.parent(mapping.joint(next)) != j && only_unmapped) rig.aim_joint_[b] = mapping.joint(next);
       break;
     }
-    Matrix3d rest_frame, canonical_frame;
     if (bone == B::kHips) {
       // The pelvis is placed by its left-right axis and the world up.
-      Vector3d hips_lateral = to_canonical * (at(B::kLeftUpperLeg) - at(B::kRightUpperLeg));
-      rest_frame = Frame(hips_lateral, Vector3d::UnitY());
-      canonical_frame = Frame(Vector3d::UnitX(), Vector3d::UnitY());
+      const Vector3d hips_lateral = to_canonical * (at(B::kLeftUpperLeg) - at(B::kRightUpperLeg));
+      const Matrix3d rest_frame = Frame(hips_lateral, Vector3d::UnitY());
+      const Matrix3d canonical_frame = Frame(Vector3d::UnitX(), Vector3d::UnitY());
+      correction[j] = Quaterniond(Matrix3d(canonical_frame * rest_frame.transpose()));
     } else {
-      const Vector3d canonical_dir = CanonicalDirection(bone), ref = CanonicalTwistReference(bone);
+      int ancestor = skeleton.parent(j);
+      while (ancestor != kNoParent && mapping.BoneOfJoint(ancestor) < 0) ancestor = skeleton.parent(ancestor);
+      const Quaterniond carried = ancestor == kNoParent ? Quaterniond::Identity() : correction[ancestor];
       const auto dir = RestDirection(skeleton, mapping, g, bone);
-      const Vector3d d = dir ? Vector3d(to_canonical * *dir) : canonical_dir;
-      rest_frame = Frame(d, ref);
-      canonical_frame = Frame(canonical_dir, ref);
+      const Vector3d d = dir ? Vector3d(carried * (to_canonical * *dir)) : CanonicalDirection(bone);
+      correction[j] = (Quaterniond::FromTwoVectors(d, CanonicalDirection(bone)) * carried).normalized();
     }
-    const Quaterniond align(Matrix3d(canonical_frame * rest_frame.transpose()));
-    rig.t_pose_[b] = (align * to_canonical * g.rotations[j]).normalized();
+    rig.t_pose_[b] = (correction[j] * to_canonical * g.rotations[j]).normalized();
   }
   return rig;
 }

@@ -1,7 +1,8 @@
 // Rest-pose-aware retargeting through the canonical humanoid. Each rig is prepared once
 // (HumanoidRig): from its rest pose it gets the rotation from the canonical frame (Y up,
 // facing +Z, left +X) to its own axes, and per canonical bone the world rotation that joint
-// would have if the rig stood in the canonical T-pose. A motion's world rotations taken
+// would have if the rig stood in the canonical T-pose (each bone straightened relative to
+// its parent, so a bone keeps the twist it has relative to its parent in the rest). A motion's world rotations taken
 // relative to that T-pose are rig independent (CanonicalMotion); on another rig they are
 // applied relative to its T-pose. So world bone directions carry over whatever the two rigs'
 // rest poses (T-pose, A-pose, a captured frame) and local axis conventions, and the hips'
@@ -43,7 +44,7 @@ class HumanoidRig {
   const RigRest& rest() const { return rest_; }
   // Rotation taking canonical axes to the rig's world axes (its up and forward at rest).
   const Eigen::Quaterniond& frame() const { return frame_; }
-  // Height of the hips above the lowest foot joint at rest (metres): the root's scale.
+  // Height of the hips above the ankles with the legs straight (metres): the root's scale.
   double hip_height_m() const { return hip_height_m_; }
   // World rotation of the bone's joint when the rig stands in the canonical T-pose,
   // expressed in canonical axes (only for mapped bones).

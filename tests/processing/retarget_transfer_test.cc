@@ -3,6 +3,7 @@
 // unchanged, and Geno's two rest poses (A-pose and T-pose first frames) give one result.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -51,6 +52,56 @@ TEST(RetargetTransfer, SameRigCopiesRotations) {
     }
   EXPECT_LT(worst, 1e-6);
   EXPECT_LT(worst_m, 1e-9);
+}
+
+// Largest angle between the two clips' rotations of `joints`, over every frame (degrees).
+double WorstRotationDeg(const MotionClip& a, const MotionClip& b, const std::vector<int>& joints) {
+  double worst = 0.0;
+  for (int f = 0; f < a.num_frames; ++f)
+    for (int j : joints) worst = std::max(worst, GeodesicAngle(a.rotation(f, j), b.rotation(f, j)) * kDegPerRad);
+  return worst;
+}
+
+// A bone's T-pose twist is its twist relative to its parent in the rest: a rest whose hips
+// are turned against the upper body (a walking frame or mean pose often is) leaves the legs'
+// T-pose as it was, so retargeting between the two rests of one rig keeps the legs' local
+// rotations. (Measured against world axes, the legs would take up the turn as a twist.)
+TEST(RetargetTransfer, HipsTurnedInTheRestDoNotTwistTheLegs) {
+  const LoadedRig bandai = Load(testing::FixturePath("default_db/dataset-1_walk_normal_001.bvh"));
+  const Skeleton& s = bandai.scene.skeleton;
+  const int hips = bandai.mapping.joint(HumanoidBone::kHips), spine = bandai.mapping.joint(HumanoidBone::kSpine);
+  ASSERT_EQ(s.parent(spine), hips);
+  RigRest turned = bandai.rig.rest();
+  const std::vector<Eigen::Quaterniond> world = turned.WorldRotations(s);
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(25.0 * kRadPerDeg, Eigen::Vector3d::UnitY()));
+  // Hips turned 25 degrees about the vertical, the spine turned back: the upper body faces as before.
+  const Eigen::Quaterniond parent = world[hips] * turned.local_rotations[hips].conjugate();
+  turned.local_rotations[hips] = (parent.conjugate() * turn * world[hips]).normalized();
+  turned.local_rotations[spine] = ((turn * world[hips]).conjugate() * world[spine]).normalized();
+  Result<HumanoidRig> rig = HumanoidRig::Make(s, bandai.mapping, turned);
+  ASSERT_TRUE(rig.ok()) << rig.status().message();
+  const MotionClip out = RetargetClip(bandai.rig, bandai.scene.clips[0], *rig);
+  std::vector<int> legs;
+  for (HumanoidBone b : {HumanoidBone::kLeftUpperLeg, HumanoidBone::kLeftLowerLeg, HumanoidBone::kLeftFoot,
+                         HumanoidBone::kRightUpperLeg, HumanoidBone::kRightLowerLeg, HumanoidBone::kRightFoot})
+    legs.push_back(bandai.mapping.joint(b));
+  const double worst = WorstRotationDeg(bandai.scene.clips[0], out, legs);
+  std::printf("legs' local rotations after retargeting onto the rest with turned hips: worst %.2g deg\n", worst);
+  EXPECT_LT(worst, 0.01);
+}
+
+// The root's scale is the hips' height with straight legs, which bone lengths fix: the rests
+// of one rig taken from two takes (a walk's and a run's mean pose, a walk's first frame) give
+// the same hip height, however the knees bend in them.
+TEST(RetargetTransfer, HipHeightDoesNotFollowTheRestsKneeBend) {
+  std::vector<double> heights;
+  for (const char* take : {"dataset-1_walk_normal_001.bvh", "dataset-1_run_normal_001.bvh"})
+    for (RestSource rest : {RestSource::kMean, RestSource::kFirstFrame})
+      heights.push_back(Load(testing::FixturePath(std::string("default_db/") + take), rest).rig.hip_height_m());
+  const auto [low, high] = std::minmax_element(heights.begin(), heights.end());
+  std::printf("Bandai-Namco hip height from four rests: %.4f to %.4f m\n", *low, *high);
+  EXPECT_GT(*low, 0.8);
+  EXPECT_LT(*high - *low, 0.003);
 }
 
 TEST(RetargetTransfer, BandaiToCmuAndBackKeepsDirections) {
