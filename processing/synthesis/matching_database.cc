@@ -11,7 +11,11 @@ namespace mocapfill {
 
 namespace {
 
-constexpr float kMinSigma = 1e-6f;
+// The smallest channel scale (radians for joint channels, metres and metres per second for
+// the root's): a channel the database hardly moves, such as a knee's axes other than its
+// hinge, tells motions apart by nothing but noise, and scaled to unit spread it would let a
+// sketch's degree or two of twist from another rig outweigh everything else.
+constexpr float kMinSigma = 0.02f;
 
 // Which key phases of the sketch filter to build: every phase, or `wanted` evenly spread.
 std::vector<int> PhasesToBuild(int spacing, int wanted) {
