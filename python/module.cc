@@ -292,6 +292,21 @@ void BindMethods(py::module_& m) {
       py::call_guard<py::gil_scoped_release>(), py::arg("scene"), py::arg("gains"), py::arg("residual_gain") = 1.0,
       py::arg("levels") = 0, py::arg("joints") = std::vector<std::string>{},
       "Multiresolution filtering: a gain per frequency band, highest first.");
+  m.def(
+      "_run_pipeline",
+      [](const std::string& path, const std::vector<std::string>& sets) {
+        api::PipelineResult r;
+        {
+          py::gil_scoped_release release;
+          r = api::RunPipeline(path, sets);
+        }
+        return py::make_tuple(r.report_json, r.warnings);
+      },
+      py::arg("path"), py::arg("sets") = std::vector<std::string>{});
+  m.def("describe_pipeline", &api::DescribePipeline, py::call_guard<py::gil_scoped_release>(), py::arg("path"),
+        py::arg("sets") = std::vector<std::string>{},
+        "The validated plan of a pipeline file, one node per line (as `mocapfill run --dry-run`).");
+  m.def("pipeline_node_types", &api::PipelineNodeTypes, "Every pipeline node type with its options.");
 }
 
 }  // namespace

@@ -9,10 +9,11 @@
 #include "converter/commands.h"
 #include "converter/console.h"
 #include "converter/exit_codes.h"
-#include "converter/fill_flags.h"
+#include "converter/node_flags.h"
 #include "converter/option_values.h"
 #include "formats/mfdb/motion_folder.h"
 #include "formats/motion_io.h"
+#include "processing/graph/nodes/fill_schema.h"
 #include "processing/motion/resample.h"
 #include "processing/evaluation/loso.h"
 #include "processing/evaluation/scenarios.h"
@@ -31,9 +32,17 @@ struct EvalArgs {
   std::string folds, contents, save_sketches;
   bool json = false;
   std::string feet = "free";
-  FillOptions fill;
-  FillFlagText text;
+  NodeFlags flags;  // the fill methods' options (graph/nodes/fill_schema.h), except the method
 };
+
+// The fill methods' options as a node type, whose schema gives eval its fill flags (--methods
+// replaces the single method).
+graph::NodeTypeSpec FillMethodSpec() {
+  graph::NodeTypeSpec spec;
+  spec.type = "fill";
+  spec.options = graph::FillMethodOptionSpecs();
+  return spec;
+}
 
 nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
   return {{"mpjpe_unkeyed_cm", m.mpjpe_unkeyed_cm},
@@ -156,12 +165,16 @@ int RunEval(EvalArgs& args) {
   options.only_folds = SplitList(args.folds);
   options.only_contents = SplitList(args.contents);
   options.plant_feet = args.feet == "plant";
-  Status flags = ApplyFillFlagText(args.text, args.fill);
+  const graph::NodeTypeSpec spec = FillMethodSpec();
+  Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
+  Result<FillOptions> fill = node_options.ok() ? graph::FillOptionsFrom(*node_options, FlagLabel(spec))
+                                               : Result<FillOptions>(node_options.status());
+  Status flags = fill.status();
   for (const std::string& name : SplitList(args.methods)) {
     Result<FillMethod> method = ParseFillMethod(name);
     if (!method.ok()) flags = method.status();
     if (!flags.ok()) break;
-    NamedMethod named{name, args.fill};
+    NamedMethod named{name, *fill};
     named.options.method = *method;
     options.methods.push_back(named);
   }
@@ -238,8 +251,7 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   command->add_option("--save-sketches", args->save_sketches,
                       "Only write the selected clips' sketches (.sketch.glb, and .sketch.bvh at the key rate) to DIR");
-  AddFillFlags(*command, args->fill, args->text);
-  AddPcaMethodFlags(*command, args->fill, args->text);
+  AddNodeFlags(*command, FillMethodSpec(), args->flags, {"method"});
   command->footer(
       "Example:\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -13,15 +14,15 @@
 #include "converter/database_arg.h"
 #include "converter/exit_codes.h"
 #include "converter/export_flags.h"
-#include "converter/fill_flags.h"
 #include "converter/import_flags.h"
-#include "converter/option_values.h"
+#include "converter/node_flags.h"
 #include "converter/std_streams.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
 #include "library/fill_report_json.h"
-#include "processing/retargeting/rest_pose.h"
+#include "processing/graph/nodes/fill_schema.h"
+#include "processing/graph/nodes/nodes.h"
 #include "processing/retargeting/rig_mapping.h"
 #include "processing/sketch_fill/sketch_fill.h"
 #include "processing/synthesis/coverage.h"
@@ -31,16 +32,18 @@ namespace mocapfill::cli {
 namespace {
 
 struct FillArgs {
-  std::string input, output, report, map, method = "hierarchical", synthesize, keep, pca, rest = "auto";
-  std::string position_keys, feet = "plant";
+  std::string input, output, report, map, pca;
   std::string from, format = "glb";  // formats of - (standard input / output)
   bool json = false;
   std::vector<std::string> db;
   ImportOptions import;
   ExportOptions export_options;
-  FillOptions fill;
-  FillFlagText text;
+  NodeFlags flags;  // the fill node's options (graph/nodes/fill_schema.h)
 };
+
+// The fill node's options the verb takes its own way: the rig map as inline JSON or a file
+// (--map), the output rate with the import's (--rate).
+const std::set<std::string> kOwnWay = {"rename", "rate_hz"};
 
 // --map: inline JSON (starting with '{') or a JSON file.
 Result<std::map<std::string, std::string>> ReadMapArg(const std::string& arg) {
@@ -97,21 +100,12 @@ Status MeasureWrittenKeys(const std::string& path, const Scene& sketch, SketchFi
 }
 
 int RunFill(FillArgs& args) {
-  Status flags = ApplyFillFlagText(args.text, args.fill);
-  if (flags.ok()) {
-    Result<FillMethod> method = ParseFillMethod(args.method);
-    flags = method.status();
-    if (method.ok()) args.fill.method = *method;
-  }
-  if (flags.ok()) flags = args.fill.Validate();
-  SketchFillOptions options;
-  options.fill = args.fill;
-  if (flags.ok()) {
-    Result<RestSource> rest = ParseRestSource(args.rest);
-    flags = rest.status();
-    if (rest.ok()) options.rest = *rest;
-  }
-  if (!flags.ok()) return Fail(flags, Stage::kProcessing);
+  const graph::NodeTypeSpec spec = graph::FillNodeSpec();
+  Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
+  if (!node_options.ok()) return Fail(node_options.status(), Stage::kProcessing);
+  Result<SketchFillOptions> checked = graph::SketchFillOptionsFrom(*node_options, FlagLabel(spec));
+  if (!checked.ok()) return Fail(checked.status(), Stage::kProcessing);
+  SketchFillOptions options = std::move(checked).value();
   if (args.json && IsStdStream(args.output))
     return Fail(InvalidArgument("--json and an output on standard output (-) cannot share it"), Stage::kOutput);
   // "-": standard input spooled to a file, standard output written through one.
@@ -136,10 +130,6 @@ int RunFill(FillArgs& args) {
   if (!map.ok()) return Fail(map.status(), Stage::kInput);
   options.map = *map;
   options.output_rate_hz = args.import.rate_hz;
-  options.keep = SplitList(args.keep);
-  options.synthesize = SplitList(args.synthesize);
-  options.position_keys = SplitList(args.position_keys);
-  options.plant_feet = args.feet == "plant";
   Result<Scene> scene = ImportFile(args.input, args.import);
   if (!scene.ok()) return Fail(Status(scene.status().code(), AsGiven(scene.status().message(), args.input)), Stage::kInput);
   if (scene->clips.size() > 1) scene->clips.resize(1);  // the first animation is the sketch
@@ -194,9 +184,6 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   command->add_flag("--json", args->json, "Print the report (as --report writes it) on standard output");
   command->add_option("--db", args->db, "Database: an .mfdb file or motion files/folders (default: embedded)");
-  command->add_option("--method", args->method, "hierarchical, fragment, nn, mean, pca or hybrid")
-      ->check(CLI::IsMember({"hierarchical", "fragment", "nn", "mean", "pca", "hybrid"}))
-      ->capture_default_str();
   command->add_option("--pca", args->pca,
                       "PCA model (.pca, `mocapfill pca build`) for --method pca|hybrid; default: built in memory "
                       "from the database (time reported as stage pca_model)");
@@ -204,21 +191,7 @@ void AddFillCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--map", args->map,
                       "Rig map overrides, inline JSON or a JSON file: {\"sketch joint\": \"canonical bone or database "
                       "joint\", ...} (\"\" leaves a joint unmapped); the rest is mapped automatically");
-  command->add_option("--rest", args->rest, "The sketch rig's rest pose: auto (bind pose of a skin, else zero pose, else the "
-                      "sketch's mean pose, else its first frame), bind, zero, mean or first-frame")
-      ->check(CLI::IsMember(RestSourceNames()))
-      ->capture_default_str();
-  command->add_option("--position-keys", args->position_keys,
-                      "Joints whose translation keys are world-space position targets (comma-separated)");
-  command->add_option("--feet", args->feet,
-                      "plant: a foot standing low and still at two consecutive keys is held there in between "
-                      "(leg IK; keys stay exact); free: legs as filled")
-      ->check(CLI::IsMember({"plant", "free"}))
-      ->capture_default_str();
-  command->add_option("--synthesize", args->synthesize, "Joints to synthesise even if keyed (comma-separated)");
-  command->add_option("--keep", args->keep, "Only these joints are keyed; every other joint is synthesised");
-  AddFillFlags(*command, args->fill, args->text);
-  AddPcaMethodFlags(*command, args->fill, args->text);
+  AddNodeFlags(*command, graph::FillNodeSpec(), args->flags, kOwnWay);
   AddImportFlags(*command, args->import);
   AddExportFlags(*command, args->export_options);
   command->footer(

@@ -14,13 +14,11 @@
 #include "converter/exit_codes.h"
 #include "converter/export_flags.h"
 #include "converter/import_flags.h"
-#include "converter/option_values.h"
+#include "converter/node_flags.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
-#include "processing/motion/resample.h"
-#include "processing/pca/pca_clip.h"
-#include "processing/pca/pca_edit.h"
+#include "processing/graph/nodes/nodes.h"
 #include "processing/pca/pca_model_builder.h"
 #include "processing/pca/pca_projection.h"
 
@@ -32,29 +30,35 @@ struct PcaArgs {
   // build
   std::vector<std::string> db;
   std::string output;
-  std::string labels;
-  PcaModelOptions build;
+  NodeFlags build;  // the pca_build node's options
   // info
   std::string model_path;
   bool json = false;
   // edit
   std::string input;
-  std::vector<std::string> components;
+  NodeFlags edit;  // the pca_edit node's options, but keep_residual (--drop-residual)
   bool drop_residual = false;
   ImportOptions import;
   ExportOptions export_options;
 };
 
 int RunBuild(PcaArgs& args) {
-  args.build.labels = SplitList(args.labels);
-  if (Status valid = args.build.Validate(); !valid.ok()) return Fail(valid, Stage::kProcessing);
+  const graph::NodeTypeSpec spec = graph::PcaBuildNodeSpec();
+  Result<graph::NodeOptions> options = NodeOptionsFromFlags(spec, args.build);
+  if (!options.ok()) return Fail(options.status(), Stage::kProcessing);
+  Result<std::unique_ptr<graph::Node>> node = spec.create(*options);
+  if (!node.ok()) return Fail(node.status(), Stage::kProcessing);
   if (LowerExtension(args.output) != ".pca")
     return Fail(InvalidArgument(args.output + ": the model file must end in .pca"), Stage::kOutput);
   const auto start = std::chrono::steady_clock::now();
   Result<MotionDatabase> db = LoadDatabase(args.db);
   if (!db.ok()) return Fail(db.status(), Stage::kInput);
-  Result<PcaModel> model = BuildPcaModel(*db, args.build);
-  if (!model.ok()) return Fail(model.status(), Stage::kProcessing);
+  graph::NodeInputs inputs;
+  inputs.Set("database", graph::Value(std::make_shared<const MotionDatabase>(std::move(db).value())));
+  graph::RunContext context;
+  Result<graph::Value> built = (*node)->Run(inputs, context);
+  if (!built.ok()) return Fail(built.status(), Stage::kProcessing);
+  const std::shared_ptr<const PcaModel> model = std::get<std::shared_ptr<const PcaModel>>(*built);
   if (Status written = WritePcaModel(*model, args.output); !written.ok()) return Fail(written, Stage::kOutput);
   if (!IsQuiet())
     std::fprintf(stderr, "pca build: %d components (%.1f%% of the variance) from %d vectors of %zu clips, %.2f s\n",
@@ -113,42 +117,32 @@ int RunInfo(const PcaArgs& args) {
   return kExitOk;
 }
 
-Result<MotionClip> EditClip(const PcaModel& model, const Skeleton& skeleton, const MotionClip& input,
-                            const PcaEditOptions& options) {
-  MotionClip clip = input;
-  if (model.window_frames > 1 && std::abs(clip.sample_rate_hz / model.sample_rate_hz - 1.0) > 1e-6) {
-    // A window spans a fixed number of frames at the model's rate.
-    ResampleOptions resample;
-    resample.rate_hz = model.sample_rate_hz;
-    ASSIGN_OR_RETURN(clip, ResampleClip(clip, resample));
-  }
-  ASSIGN_OR_RETURN(const PcaBinding binding, BindPcaModel(model, skeleton));
-  const EncodedClip encoded = EncodeClip(model, binding, skeleton, clip);
-  ASSIGN_OR_RETURN(const Eigen::MatrixXd edited, EditPoses(model, encoded.poses, options));
-  return DecodeClip(model, binding, skeleton, encoded, edited, clip);
-}
-
-int RunEdit(const PcaArgs& args) {
-  PcaEditOptions options;
-  options.keep_residual = !args.drop_residual;
-  Result<std::vector<ComponentDial>> dials = ParseComponentDials(args.components, "--component");
-  if (!dials.ok()) return Fail(dials.status(), Stage::kProcessing);
-  options.dials = *dials;
+int RunEdit(PcaArgs& args) {
+  const graph::NodeTypeSpec spec = graph::PcaEditNodeSpec();
+  args.edit.fixed = {{"keep_residual", graph::OptionValue::Bool(!args.drop_residual)}};
+  Result<graph::NodeOptions> options = NodeOptionsFromFlags(spec, args.edit);
+  if (!options.ok()) return Fail(options.status(), Stage::kProcessing);
+  Result<std::unique_ptr<graph::Node>> node = spec.create(*options);
+  if (!node.ok()) return Fail(node.status(), Stage::kProcessing);
   if (!IsExportExtension(args.output))
     return Fail(InvalidArgument(args.output + ": output must end in .gltf, .glb or .bvh"), Stage::kOutput);
   if (IsSameFile(args.input, args.output)) return Fail(IoError(args.output + ": refusing to overwrite the input"), Stage::kOutput);
   Result<PcaModel> model = ReadPcaModel(args.model_path);
   if (!model.ok()) return Fail(model.status(), Stage::kInput);
-  if (Status valid = options.Validate(*model); !valid.ok()) return Fail(valid, Stage::kProcessing);
   Result<Scene> scene = ImportFile(args.input, args.import);
   if (!scene.ok()) return Fail(scene.status(), Stage::kInput);
-  if (scene->clips.empty()) return Fail(InvalidData(args.input + ": no animation to edit"), Stage::kInput);
-  for (MotionClip& clip : scene->clips) {
-    Result<MotionClip> edited = EditClip(*model, scene->skeleton, clip, options);
-    if (!edited.ok()) return Fail(edited.status().WithContext(args.input + ": clip '" + clip.name + "'"), Stage::kProcessing);
-    clip = std::move(*edited);
+  graph::NodeInputs inputs;
+  inputs.Set("motion", graph::Value(std::make_shared<const Scene>(std::move(scene).value())));
+  inputs.Set("model", graph::Value(std::make_shared<const PcaModel>(std::move(model).value())));
+  graph::RunContext context;
+  Result<graph::Value> edited = (*node)->Run(inputs, context);
+  if (!edited.ok()) {
+    // A component beyond the model is the user's choice; a motion without animation, the input's.
+    const Stage stage = edited.status().code() == ErrorCode::kInvalidData ? Stage::kInput : Stage::kProcessing;
+    return Fail(edited.status().WithContext(args.input), stage);
   }
-  if (Status written = ExportFile(*scene, args.output, args.export_options); !written.ok()) return Fail(written, Stage::kOutput);
+  const Scene& out = *std::get<std::shared_ptr<const Scene>>(*edited);
+  if (Status written = ExportFile(out, args.output, args.export_options); !written.ok()) return Fail(written, Stage::kOutput);
   return kExitOk;
 }
 
@@ -167,15 +161,7 @@ void AddPcaCommand(CLI::App& app, CommandAction& action) {
   CLI::App* build = pca->add_subcommand("build", "Build a PCA model of (some behaviours of) a database");
   build->add_option("--db", args->db, "Database: an .mfdb file or motion files/folders (default: embedded)");
   build->add_option("-o,--output", args->output, "Model file to write (.pca)")->required();
-  build->add_option("--variance", args->build.basis.variance_kept, "Share of the variance to keep, (0, 1]")
-      ->capture_default_str();
-  build->add_option("--max-components", args->build.basis.max_components, "Upper bound on components")
-      ->capture_default_str();
-  build->add_option("--labels", args->labels, "Only clips with one of these labels (comma-separated; key=value allowed)");
-  build->add_option("--window", args->build.basis.window_frames, "Window PCA over this many frames (1 = pose PCA)")
-      ->capture_default_str();
-  build->add_option("--window-stride", args->build.basis.window_stride_frames, "Hop between estimation windows (frames)")
-      ->capture_default_str();
+  AddNodeFlags(*build, graph::PcaBuildNodeSpec(), args->build);
   build->footer(
       "Examples:\n"
       "  mocapfill pca build --db bn1.mfdb -o walk.pca --labels walk\n"
@@ -195,7 +181,7 @@ void AddPcaCommand(CLI::App& app, CommandAction& action) {
   edit->add_option("input", args->input, "Motion to edit (.bvh .gltf .glb .fbx)")->required();
   edit->add_option("-o,--output", args->output, "Output file (.glb .gltf .bvh)")->required();
   edit->add_option("--model", args->model_path, "Model file (.pca)")->required();
-  edit->add_option("--component", args->components, "<component>=<sigmas>, 1-based, |sigmas| <= 3; repeatable");
+  AddNodeFlags(*edit, graph::PcaEditNodeSpec(), args->edit, {"keep_residual"});
   edit->add_flag("--drop-residual", args->drop_residual,
                  "Rebuild the motion from the model only (default keeps the detail the model does not explain)");
   AddImportFlags(*edit, args->import);

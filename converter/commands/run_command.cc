@@ -6,10 +6,11 @@
 
 #include "converter/commands.h"
 #include "converter/console.h"
+#include "converter/database_arg.h"
 #include "converter/exit_codes.h"
-#include "converter/pipeline/file_nodes.h"
-#include "converter/pipeline/pipeline_file.h"
-#include "converter/pipeline/pipeline_session.h"
+#include "library/pipeline/file_nodes.h"
+#include "library/pipeline/pipeline_file.h"
+#include "library/pipeline/pipeline_session.h"
 #include "formats/file_io.h"
 
 namespace mocapfill::cli {
@@ -22,6 +23,16 @@ struct RunArgs {
   bool dry_run = false, list_nodes = false, json = false;
 };
 
+// Where a node's failure belongs: sources read input, sinks write output.
+Stage StageOf(graph::NodeRole role) {
+  switch (role) {
+    case graph::NodeRole::kSource: return Stage::kInput;
+    case graph::NodeRole::kSink: return Stage::kOutput;
+    case graph::NodeRole::kProcess: return Stage::kProcessing;
+  }
+  return Stage::kProcessing;
+}
+
 // Multi-line validation messages get the pipeline file on every line.
 int Fail(const std::string& file, const Status& status, Stage stage) {
   std::istringstream lines(status.message());
@@ -30,7 +41,9 @@ int Fail(const std::string& file, const Status& status, Stage stage) {
 }
 
 int RunPipeline(const RunArgs& args) {
-  Result<graph::NodeRegistry> registry = MakePipelineRegistry();
+  // The database node loads as the verbs do, with a progress bar on a terminal.
+  Result<graph::NodeRegistry> registry = MakePipelineRegistry(
+      [](const std::vector<std::string>& paths, const DatabaseBuildOptions& options) { return LoadDatabase(paths, options); });
   if (!registry.ok()) return Fail("", registry.status(), Stage::kProcessing);
   if (args.list_nodes) {
     std::cout << DescribeNodeTypes(*registry);

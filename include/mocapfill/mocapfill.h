@@ -8,6 +8,7 @@
 #include "mocapfill/filter.h"
 #include "mocapfill/io.h"
 #include "mocapfill/pca.h"
+#include "mocapfill/pipeline.h"
 #include "mocapfill/retarget.h"
 #include "mocapfill/scene.h"
 #include "mocapfill/version.h"

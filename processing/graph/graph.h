@@ -1,5 +1,5 @@
 // The processing graph (issue 5): nodes described as plain data (GraphConfig, filled from a
-// pipeline file by converter/pipeline), validated as a whole before anything runs (types,
+// pipeline file by library/pipeline), validated as a whole before anything runs (types,
 // options, ports, cycles), ordered topologically and run one node after another.
 //
 // Every validation message names the node, its type and the option or input at fault:

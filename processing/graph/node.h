@@ -1,7 +1,7 @@
 // Node types of the processing graph (issue 5): typed ports, option specifications with
 // defaults, units and ranges, and the Node interface a validated node runs through. The graph
 // core knows nothing of files or JSON: nodes that read or write files are registered by the
-// converter (converter/pipeline/), algorithm nodes by processing/graph/processing_nodes.h.
+// use cases (library/pipeline/), algorithm nodes by processing/graph/processing_nodes.h.
 #pragma once
 
 #include <functional>
@@ -68,6 +68,13 @@ struct OptionSpec {
   // appear without touching the graph). Its message follows `option "name": `.
   std::function<Status(const OptionValue&)> check;
   std::string doc;
+  // The command line's spelling when it is not the name's with '-' for '_' (the fill's
+  // "fragment_band_hz" is `--fragment-hz`), so a verb keeps its flags when its options
+  // come from a node's schema.
+  std::string flag;
+  // kBool on the command line as a word for true and one for false (`--feet plant|free`);
+  // empty: a switch (`--periodic`, `--periodic=false`).
+  std::vector<std::string> words;
 };
 
 // Checks `value` against `spec` (type, range, choices, `check`): kInvalidArgument with a

@@ -1,6 +1,6 @@
 // Plain option values of a processing-graph node: the JSON-like tree a pipeline file or a
 // --set override gives, without any JSON library type (the graph core knows nothing of files
-// or JSON; converter/pipeline turns nlohmann::json into these).
+// or JSON; library/pipeline turns nlohmann::json into these).
 #pragma once
 
 #include <string>

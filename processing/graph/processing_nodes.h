@@ -1,6 +1,6 @@
 // Registers the algorithm node types (fill, filter, texture, pca_build, pca_fit, pca_edit).
 // Nodes that touch files (import, database, pca_model, export) are the converter's
-// (converter/pipeline/file_nodes.h).
+// (library/pipeline/file_nodes.h).
 #pragma once
 
 #include "processing/graph/node_registry.h"

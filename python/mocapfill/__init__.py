@@ -27,12 +27,14 @@ from ._mocapfill import (  # noqa: F401
     __version__,
     convert,
     default_database_path,
+    describe_pipeline,
     filter,
     load,
+    pipeline_node_types,
     retarget,
     save,
 )
-from ._mocapfill import _fill, _FillOptions
+from ._mocapfill import _fill, _FillOptions, _run_pipeline
 
 
 def fill(sketch, database, method="hierarchical", map=None, rest="auto", rate_hz=0.0, keep=None,
@@ -82,3 +84,11 @@ Database.default = staticmethod(lambda progress=None: _open(None, progress=progr
 
 __all__ = ["Clip", "Database", "Error", "InputError", "OutputError", "PcaModel", "ProcessingError", "Scene",
            "UsageError", "convert", "default_database_path", "fill", "filter", "load", "retarget", "save", "__version__"]
+
+
+def run_pipeline(path, sets=None):
+    """Runs a pipeline file (docs/pipeline.md) as ``mocapfill run`` does; returns the run report
+    (a dict: per-node seconds and warnings, each fill node's report). ``sets`` overrides options:
+    ``["out.path=/tmp/x.glb", "fill.method=fragment"]``. Its export nodes write their files."""
+    report, _warnings = _run_pipeline(path, list(sets or []))
+    return json.loads(report)

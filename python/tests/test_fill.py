@@ -121,3 +121,24 @@ def test_filter_gains(fixtures):
     assert jerk(smooth.clip(0)) < 0.5 * jerk(scene.clip(0))
     with pytest.raises(mocapfill.UsageError, match="joints"):
         mocapfill.filter(scene, gains=[0.0], joints=["NoSuchJoint"])
+
+
+def test_run_pipeline_fills_as_the_fill_call(fixtures, sketch, default_db, tmp_path):
+    """A pipeline file run from Python writes what its export node says, and its fill node gives
+    the result mocapfill.fill gives with the same options; a bad override is a UsageError."""
+    pipeline = str(fixtures / "pipelines" / "fill_default.json")
+    out = tmp_path / "piped.glb"
+    plan = mocapfill.describe_pipeline(pipeline, sets=["out.path=%s" % out])
+    assert "fill" in plan and not out.exists()  # the plan runs nothing
+    report = mocapfill.run_pipeline(pipeline, sets=["out.path=%s" % out, "fill.texture=false"])
+    assert report["ok"] and [n["id"] for n in report["nodes"]] == ["sketch", "db", "fill", "out"]
+    fill_report = next(n for n in report["nodes"] if n["id"] == "fill")["report"]
+    assert fill_report["key_error_max_deg"] < 0.01
+    piped = mocapfill.load(str(out)).clip(0)
+    direct, _ = mocapfill.fill(sketch, default_db, texture=False)
+    worst = angle_deg(piped.rotations, direct.clip(0).rotations).max()
+    print("pipeline against mocapfill.fill: worst joint difference %.2e deg" % worst)
+    assert worst < 1e-3
+    with pytest.raises(mocapfill.UsageError, match="nosuchnode"):
+        mocapfill.run_pipeline(pipeline, sets=["nosuchnode.path=x.glb"])
+    assert "pca_edit" in mocapfill.pipeline_node_types()

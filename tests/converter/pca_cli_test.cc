@@ -104,7 +104,7 @@ TEST(PcaCli, BadInputsGiveDocumentedExitCodesAndNoOutput) {
   RunResult syntax = RunCli("pca edit " + Quote(w.input) + " -o " + Quote(out) + " --model " + Quote(w.model) +
                             " --component 2:1");
   EXPECT_EQ(syntax.exit_code, 1);
-  EXPECT_NE(syntax.output.find("expected <component>=<sigmas>"), std::string::npos) << syntax.output;
+  EXPECT_NE(syntax.output.find("--component: \"2:1\": expected <key>=<value>, e.g. 1=+2.0"), std::string::npos) << syntax.output;
   const std::string truncated = w.dir + "/truncated.pca";
   fs::copy_file(w.model, truncated);
   fs::resize_file(truncated, 100);

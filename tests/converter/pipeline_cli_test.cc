@@ -195,7 +195,9 @@ TEST(PipelineRun, ListNodesDocumentsEveryType) {
   for (const char* type : {"import:", "database:", "pca_model:", "export:", "fill:", "filter:", "texture:",
                            "pca_build:", "pca_fit:", "pca_edit:"})
     EXPECT_NE(("\n" + run.output).find(std::string("\n") + type), std::string::npos) << type;
-  EXPECT_NE(run.output.find("option fragment_band_hz (number, default 1, Hz, > 0)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("option fragment_band_hz (number, default 1, Hz, >= 0.01 and <= 100; flag --fragment-hz)"),
+            std::string::npos)
+      << run.output;
 }
 
 // A small valid pipeline (import -> filter -> export) written to a scratch folder, with one

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "converter/pipeline/file_nodes.h"
-#include "converter/pipeline/pipeline_file.h"
+#include "library/pipeline/file_nodes.h"
+#include "library/pipeline/pipeline_file.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill::cli {

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
 
 #include "formats/motion_io.h"
 #include "tests/support/cli_run.h"
@@ -108,6 +109,39 @@ TEST(PlumbingCli, RunReportCarriesTheFillReport) {
       EXPECT_FALSE(node["report"]["joints"].empty());
     }
   EXPECT_TRUE(found) << r.output;
+}
+
+// One option schema for the fill: the verb's flags are generated from the fill node's options,
+// so a value out of range gets the same message from both (named by flag or by option), and
+// the spellings the verb always had (--fragment-hz, --feet plant|free, --texture on|off,
+// repeated --dial) still parse.
+TEST(PlumbingCli, FillFlagsAndFillNodeShareOneSchema) {
+  const std::string dir = testing::ScratchDir("plumbing_fill_schema");
+  const std::string sketch = Fixture("sketches/walk_proud_002_legs8.glb");
+  const testing::RunResult flag = RunCli("fill " + sketch + " -o " + Quote(dir + "/a.glb") + " --candidates 0");
+  EXPECT_EQ(flag.exit_code, 1) << flag.output;
+  EXPECT_NE(flag.output.find("--candidates: expected an integer in [1, 1024], got 0"), std::string::npos) << flag.output;
+  EXPECT_FALSE(fs::exists(dir + "/a.glb"));
+  const testing::RunResult node = RunCli("run " + Fixture("pipelines/fill_default.json") + " --set out.path=" +
+                                         Quote(dir + "/b.glb") + " --set fill.candidates=0");
+  EXPECT_EQ(node.exit_code, 1) << node.output;
+  EXPECT_NE(node.output.find("option \"candidates\": expected an integer in [1, 1024], got 0"), std::string::npos)
+      << node.output;
+  const testing::RunResult words = RunCli("fill " + sketch + " -o " + Quote(dir + "/c.glb") + " --texture maybe");
+  EXPECT_EQ(words.exit_code, 1) << words.output;
+  EXPECT_NE(words.output.find("--texture"), std::string::npos) << words.output;
+  const testing::RunResult spelled =
+      RunCli("-q fill " + sketch + " -o " + Quote(dir + "/d.glb") +
+             " --fragment-hz 1 --feet free --texture off --coverage warn --method hybrid --dial 1=+0.5 --dial 2=-0.5"
+             " --report " + Quote(dir + "/d.json"));
+  ASSERT_EQ(spelled.exit_code, 0) << spelled.output;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(dir + "/d.json"));
+  EXPECT_EQ(report["method"], "hybrid");
+  EXPECT_TRUE(report["feet"]["contacts"].empty()) << report["feet"];  // --feet free holds nothing
+  // A list flag takes one value per occurrence: the sketch after it stays the positional input.
+  const testing::RunResult lists =
+      RunCli("-q fill --keep Hips --keep UpperLeg_L,LowerLeg_L " + sketch + " -o " + Quote(dir + "/e.glb") + " --json");
+  ASSERT_EQ(lists.exit_code, 0) << lists.output;
 }
 
 TEST(PlumbingCli, DefaultDatabaseByName) {

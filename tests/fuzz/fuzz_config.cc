@@ -3,8 +3,8 @@
 #include <string>
 
 #include "converter/database_arg.h"
-#include "converter/pipeline/file_nodes.h"
-#include "converter/pipeline/pipeline_file.h"
+#include "library/pipeline/file_nodes.h"
+#include "library/pipeline/pipeline_file.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/file_io.h"
 #include "processing/graph/graph.h"
@@ -30,8 +30,8 @@ const Skeleton* FixtureRig() {
 }  // namespace
 
 int FuzzPipeline(const uint8_t* data, size_t size) {
-  static const Result<graph::NodeRegistry> registry = cli::MakePipelineRegistry();
-  Result<cli::PipelineFile> file = cli::ParsePipelineJson(std::string(reinterpret_cast<const char*>(data), size));
+  static const Result<graph::NodeRegistry> registry = MakePipelineRegistry();
+  Result<PipelineFile> file = ParsePipelineJson(std::string(reinterpret_cast<const char*>(data), size));
   if (file.ok() && registry.ok()) (void)graph::Graph::Build(file->config, *registry);
   return 0;
 }

@@ -53,6 +53,16 @@ OptionSpec StringOption(std::string name, std::string default_value, std::vector
   return spec;
 }
 
+OptionSpec WithFlag(OptionSpec spec, std::string flag) {
+  spec.flag = std::move(flag);
+  return spec;
+}
+
+OptionSpec WithWords(OptionSpec spec, std::string yes, std::string no) {
+  spec.words = {std::move(yes), std::move(no)};
+  return spec;
+}
+
 OptionSpec ListOption(std::string name, OptionType type, std::string doc) {
   OptionSpec spec;
   spec.name = std::move(name);

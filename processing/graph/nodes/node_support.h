@@ -23,6 +23,10 @@ OptionSpec NumberOption(std::string name, double default_value, std::optional<do
 OptionSpec StringOption(std::string name, std::string default_value, std::vector<std::string> choices, std::string doc);
 // An empty list as default.
 OptionSpec ListOption(std::string name, OptionType type, std::string doc);
+// `spec` spelled `--flag` on the command line (OptionSpec::flag).
+OptionSpec WithFlag(OptionSpec spec, std::string flag);
+// `spec`, a kBool, set on the command line by a word pair (`--texture on|off`).
+OptionSpec WithWords(OptionSpec spec, std::string yes, std::string no);
 
 // The scene's first clip, or kInvalidData "<port>: no animation" / "... has no frames".
 Result<const MotionClip*> FirstClip(const Scene& scene, const std::string& port);

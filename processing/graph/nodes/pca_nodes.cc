@@ -31,6 +31,7 @@ Result<std::unique_ptr<Node>> CreatePcaBuild(const NodeOptions& o) {
   options.basis.variance_kept = o.Number("variance");
   options.basis.max_components = o.Int("max_components");
   options.basis.window_frames = o.Int("window_frames");
+  options.basis.window_stride_frames = o.Int("window_stride_frames");
   options.labels = o.StringList("labels");
   RETURN_IF_ERROR(options.Validate());
   return std::unique_ptr<Node>(new PcaBuildNode(options));
@@ -152,7 +153,10 @@ NodeTypeSpec PcaBuildNodeSpec() {
   spec.options = {
       NumberOption("variance", 0.95, 0.0, true, 1.0, "", "share of the variance kept"),
       IntOption("max_components", 30, 1, std::nullopt, "upper bound on components"),
-      IntOption("window_frames", 1, 1, std::nullopt, "1 = pose PCA; W > 1 = window PCA over W frames", "frames"),
+      WithFlag(IntOption("window_frames", 1, 1, std::nullopt, "1 = pose PCA; W > 1 = window PCA over W frames", "frames"),
+               "window"),
+      WithFlag(IntOption("window_stride_frames", 1, 1, std::nullopt, "hop between estimation windows", "frames"),
+               "window-stride"),
       ListOption("labels", OptionType::kStringList, "only clips with one of these labels (\"walk\", \"style=happy\")"),
   };
   spec.create = CreatePcaBuild;
@@ -186,8 +190,9 @@ NodeTypeSpec PcaEditNodeSpec() {
   spec.inputs = {{"motion", PortType::kMotion, false, "motion to edit"},
                  {"model", PortType::kPcaModel, false, "PCA model"}};
   spec.output = PortSpec{"motion", PortType::kMotion, false, "the edited motion"};
-  OptionSpec components = ListOption("components", OptionType::kNumberMap,
-                                     "1-based component -> change in standard deviations, e.g. {\"1\": 2.0}");
+  OptionSpec components = WithFlag(ListOption("components", OptionType::kNumberMap,
+                                              "1-based component -> change in standard deviations, e.g. {\"1\": 2.0}"),
+                                   "component");
   components.unit = "sigmas";
   spec.options = {
       components,

@@ -1,15 +1,14 @@
-// What `mocapfill run` does around the graph core: checks that outputs never overwrite
-// inputs, describes the plan (--dry-run) and the node types (--list-nodes), and writes the
-// per-node timing report (--report run.json).
+// What running a pipeline file takes around the graph core (`mocapfill run`, api::RunPipeline):
+// checks that outputs never overwrite inputs, describes the plan (--dry-run) and the node types
+// (--list-nodes), and the per-node timing report (--report run.json).
 #pragma once
 
 #include <string>
 
-#include "converter/exit_codes.h"
-#include "converter/pipeline/pipeline_file.h"
+#include "library/pipeline/pipeline_file.h"
 #include "processing/graph/graph.h"
 
-namespace mocapfill::cli {
+namespace mocapfill {
 
 // Before anything runs: an export path naming an input file (kIoError: exit 4), or two
 // exports writing the same file (kInvalidArgument), names the nodes.
@@ -26,7 +25,4 @@ std::string DescribeNodeTypes(const graph::NodeRegistry& registry);
 // {"pipeline", "ok", "error", "total_seconds", "nodes": [{"id", "type", "seconds", "warnings"}]}.
 std::string RunReportJson(const PipelineFile& file, const graph::GraphRun& run);
 
-// Where a node's failure belongs: sources read input, sinks write output.
-Stage StageOf(graph::NodeRole role);
-
-}  // namespace mocapfill::cli
+}  // namespace mocapfill

@@ -15,7 +15,7 @@
 #include "processing/graph/graph.h"
 #include "processing/graph/node_registry.h"
 
-namespace mocapfill::cli {
+namespace mocapfill {
 
 struct PipelineFile {
   std::string path;         // as given
@@ -37,4 +37,4 @@ Result<PipelineFile> ReadPipelineFile(const std::string& path, const graph::Node
 // to the current directory). Unknown node id or a malformed override: kInvalidArgument.
 Status ApplyOverrides(const std::vector<std::string>& overrides, graph::GraphConfig& config);
 
-}  // namespace mocapfill::cli
+}  // namespace mocapfill

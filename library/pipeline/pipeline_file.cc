@@ -1,11 +1,11 @@
-#include "converter/pipeline/pipeline_file.h"
+#include "library/pipeline/pipeline_file.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "formats/file_io.h"
 
-namespace mocapfill::cli {
+namespace mocapfill {
 
 namespace {
 
@@ -154,4 +154,4 @@ Status ApplyOverrides(const std::vector<std::string>& overrides, graph::GraphCon
   return OkStatus();
 }
 
-}  // namespace mocapfill::cli
+}  // namespace mocapfill

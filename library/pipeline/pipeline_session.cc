@@ -1,4 +1,4 @@
-#include "converter/pipeline/pipeline_session.h"
+#include "library/pipeline/pipeline_session.h"
 
 #include <map>
 #include <nlohmann/json.hpp>
@@ -6,7 +6,7 @@
 #include "formats/file_io.h"
 #include "library/fill_report_json.h"
 
-namespace mocapfill::cli {
+namespace mocapfill {
 
 namespace {
 
@@ -84,8 +84,14 @@ std::string DescribeNodeTypes(const graph::NodeRegistry& registry) {
       text += "  input  " + port.name + " (" + graph::PortTypeName(port.type) + (port.optional ? ", optional" : "") +
               "): " + port.doc + "\n";
     if (spec.output) text += "  output " + std::string(graph::PortTypeName(spec.output->type)) + ": " + spec.output->doc + "\n";
-    for (const graph::OptionSpec& option : spec.options)
-      text += "  option " + option.name + " (" + OptionDetails(option) + "): " + option.doc + "\n";
+    for (const graph::OptionSpec& option : spec.options) {
+      // The command line's own spelling, where the verb's flag is not the name's.
+      std::string flag;
+      if (!option.flag.empty()) flag = "--" + option.flag;
+      if (option.words.size() == 2) flag = (flag.empty() ? "" : flag + " ") + option.words[0] + "|" + option.words[1];
+      text += "  option " + option.name + " (" + OptionDetails(option) + (flag.empty() ? "" : "; flag " + flag) +
+              "): " + option.doc + "\n";
+    }
     text += "\n";
   }
   return text;
@@ -111,13 +117,4 @@ std::string RunReportJson(const PipelineFile& file, const graph::GraphRun& run) 
   return json.dump(2) + "\n";
 }
 
-Stage StageOf(graph::NodeRole role) {
-  switch (role) {
-    case graph::NodeRole::kSource: return Stage::kInput;
-    case graph::NodeRole::kSink: return Stage::kOutput;
-    case graph::NodeRole::kProcess: return Stage::kProcessing;
-  }
-  return Stage::kProcessing;
-}
-
-}  // namespace mocapfill::cli
+}  // namespace mocapfill

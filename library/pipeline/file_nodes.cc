@@ -1,13 +1,13 @@
-#include "converter/pipeline/file_nodes.h"
+#include "library/pipeline/file_nodes.h"
 
-#include "converter/database_arg.h"
+#include "library/database_loading.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
 #include "formats/pca/pca_file.h"
 #include "processing/graph/nodes/node_support.h"
 #include "processing/graph/processing_nodes.h"
 
-namespace mocapfill::cli {
+namespace mocapfill {
 
 namespace {
 
@@ -93,30 +93,32 @@ NodeTypeSpec ImportSpec() {
 
 class DatabaseNode : public Node {
  public:
-  DatabaseNode(std::string path, DatabaseBuildFlags flags) : path_(std::move(path)), flags_(std::move(flags)) {}
+  DatabaseNode(std::string path, DatabaseBuildOptions flags, DatabaseLoader load)
+      : path_(std::move(path)), flags_(std::move(flags)), load_(std::move(load)) {}
   Result<Value> Run(const NodeInputs&, RunContext&) const override {
     std::vector<std::string> paths;
     if (path_ != "default") paths.push_back(path_);
-    ASSIGN_OR_RETURN(MotionDatabase db, LoadDatabase(paths, flags_));
+    ASSIGN_OR_RETURN(MotionDatabase db, load_(paths, flags_));
     return Value(std::shared_ptr<const MotionDatabase>(std::make_shared<MotionDatabase>(std::move(db))));
   }
 
  private:
   std::string path_;
-  DatabaseBuildFlags flags_;
+  DatabaseBuildOptions flags_;
+  DatabaseLoader load_;
 };
 
-Result<std::unique_ptr<Node>> CreateDatabase(const NodeOptions& o) {
-  DatabaseBuildFlags flags;
+Result<std::unique_ptr<Node>> CreateDatabase(const NodeOptions& o, const DatabaseLoader& load) {
+  DatabaseBuildOptions flags;
   flags.rate_hz = o.Number("rate_hz");
   flags.threads = o.Int("threads");
   flags.import.unit = o.String("unit");
   flags.import.up = o.String("up");
   if (o.Has("map")) flags.map = o.String("map");
-  return std::unique_ptr<Node>(new DatabaseNode(o.String("path"), flags));
+  return std::unique_ptr<Node>(new DatabaseNode(o.String("path"), flags, load));
 }
 
-NodeTypeSpec DatabaseSpec() {
+NodeTypeSpec DatabaseSpec(DatabaseLoader load) {
   NodeTypeSpec spec;
   spec.type = "database";
   spec.summary = "Load a motion database: an .mfdb file, motion files in a folder, or the embedded default";
@@ -136,7 +138,7 @@ NodeTypeSpec DatabaseSpec() {
       UpOption(),
       map,
   };
-  spec.create = CreateDatabase;
+  spec.create = [load = std::move(load)](const NodeOptions& o) { return CreateDatabase(o, load); };
   return spec;
 }
 
@@ -207,17 +209,21 @@ NodeTypeSpec ExportSpec() {
 
 }  // namespace
 
-Status RegisterFileNodes(graph::NodeRegistry& registry) {
-  for (NodeTypeSpec (*spec)() : {ImportSpec, DatabaseSpec, PcaModelSpec, ExportSpec})
-    RETURN_IF_ERROR(registry.Register(spec()));
+Status RegisterFileNodes(graph::NodeRegistry& registry, DatabaseLoader load) {
+  if (!load)
+    load = [](const std::vector<std::string>& paths, const DatabaseBuildOptions& options) {
+      return LoadDatabase(paths, options, {});
+    };
+  for (NodeTypeSpec spec : {ImportSpec(), DatabaseSpec(std::move(load)), PcaModelSpec(), ExportSpec()})
+    RETURN_IF_ERROR(registry.Register(std::move(spec)));
   return OkStatus();
 }
 
-Result<graph::NodeRegistry> MakePipelineRegistry() {
+Result<graph::NodeRegistry> MakePipelineRegistry(DatabaseLoader load) {
   graph::NodeRegistry registry;
-  RETURN_IF_ERROR(RegisterFileNodes(registry));
+  RETURN_IF_ERROR(RegisterFileNodes(registry, std::move(load)));
   RETURN_IF_ERROR(graph::RegisterProcessingNodes(registry));
   return registry;
 }
 
-}  // namespace mocapfill::cli
+}  // namespace mocapfill
