@@ -10,23 +10,12 @@ namespace mocapfill::graph {
 
 namespace {
 
-OptionSpec Checked(OptionSpec spec, std::function<Status(const OptionValue&)> check) {
-  spec.check = std::move(check);
-  return spec;
-}
-
-OptionSpec Bounded(OptionSpec spec, double min, double max) {
-  spec.min = min;
-  spec.max = max;
-  return spec;
-}
-
-std::string Label(const std::function<std::string(const std::string&)>& label, const std::string& name) {
+std::string FillOptionLabel(const std::function<std::string(const std::string&)>& label, const std::string& name) {
   return label ? label(name) : "option \"" + name + "\"";
 }
 
 // "1": component 1 on the command line and in files, 0 in ComponentDial.
-Result<std::vector<ComponentDial>> Dials(const std::map<std::string, double>& given, const std::string& label) {
+Result<std::vector<ComponentDial>> DialsOf(const std::map<std::string, double>& given, const std::string& label) {
   std::vector<ComponentDial> dials;
   for (const auto& [key, sigmas] : given) {
     const bool digits = !key.empty() && key.size() < 7 && std::all_of(key.begin(), key.end(), ::isdigit);
@@ -48,9 +37,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
   const FillOptions d;
   const PcaMethodOptions& pca = d.pca;
   return {
-      Checked(StringOption("method", "hierarchical", {}, "fill method: hierarchical, fragment, nn, mean, pca or hybrid"),
+      WithCheck(StringOption("method", "hierarchical", {}, "fill method: hierarchical, fragment, nn, mean, pca or hybrid"),
               [](const OptionValue& v) { return ParseFillMethod(v.text).status(); }),
-      Checked(StringOption("join", "cost-matrix", {}, "fragment join criterion: cost-matrix, best-fragment or best-animation"),
+      WithCheck(StringOption("join", "cost-matrix", {}, "fragment join criterion: cost-matrix, best-fragment or best-animation"),
               [](const OptionValue& v) { return ParseJoinCriterion(v.text).status(); }),
       WithWords(BoolOption("texture", d.texture, "add the matched fragments' high bands to keyed joints"), "on", "off"),
       WithWords(BoolOption("repin_keys", d.repin_keys, "restore the exact keys after texturing"), "on", "off"),
@@ -106,7 +95,7 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
                             "hybrid: add the fragments' high bands to synthesised joints too"),
                  "on", "off"),
            "texture-synth"),
-      Bounded(ListOption("gains", OptionType::kNumberList, "hybrid edit: band gains after the fill, L0 (highest) first"),
+      WithBounds(ListOption("gains", OptionType::kNumberList, "hybrid edit: band gains after the fill, L0 (highest) first"),
               0.0, 10.0),
       ListOption("dial", OptionType::kNumberMap,
                  "hybrid edit: move PCA component <k> (1-based) by <s> standard deviations, e.g. 1=+1.5"),
@@ -119,7 +108,7 @@ std::vector<OptionSpec> SketchFillOptionSpecs() {
                       "rig map overrides: sketch joint -> canonical bone or database joint, e.g. {\"Hip\": \"hips\"} "
                       "(\"\" leaves a joint unmapped)"),
            "map"),
-      Checked(StringOption("rest", "auto", RestSourceNames(),
+      WithCheck(StringOption("rest", "auto", RestSourceNames(),
                            "the sketch rig's rest pose: auto (bind pose of a skin, else zero pose, else the sketch's "
                            "mean pose, else its first frame)"),
               [](const OptionValue& v) { return ParseRestSource(v.text).status(); }),
@@ -171,7 +160,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   pca.keyed_base = o.String("keyed_base") == "sketch" ? KeyedBase::kSketch : KeyedBase::kFit;
   pca.texture_synthesized = o.Bool("texture_synthesized");
   pca.band_gains = o.NumberList("gains");
-  ASSIGN_OR_RETURN(pca.dials, Dials(o.NumberMap("dial"), Label(label, "dial")));
+  ASSIGN_OR_RETURN(pca.dials, DialsOf(o.NumberMap("dial"), FillOptionLabel(label, "dial")));
   RETURN_IF_ERROR(options.Validate());
   return options;
 }

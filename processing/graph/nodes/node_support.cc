@@ -63,6 +63,17 @@ OptionSpec WithWords(OptionSpec spec, std::string yes, std::string no) {
   return spec;
 }
 
+OptionSpec WithCheck(OptionSpec spec, std::function<Status(const OptionValue&)> check) {
+  spec.check = std::move(check);
+  return spec;
+}
+
+OptionSpec WithBounds(OptionSpec spec, double min, double max) {
+  spec.min = min;
+  spec.max = max;
+  return spec;
+}
+
 OptionSpec ListOption(std::string name, OptionType type, std::string doc) {
   OptionSpec spec;
   spec.name = std::move(name);

@@ -27,6 +27,10 @@ OptionSpec ListOption(std::string name, OptionType type, std::string doc);
 OptionSpec WithFlag(OptionSpec spec, std::string flag);
 // `spec`, a kBool, set on the command line by a word pair (`--texture on|off`).
 OptionSpec WithWords(OptionSpec spec, std::string yes, std::string no);
+// `spec` with an extra check (OptionSpec::check).
+OptionSpec WithCheck(OptionSpec spec, std::function<Status(const OptionValue&)> check);
+// `spec` with inclusive bounds (for lists: on every element).
+OptionSpec WithBounds(OptionSpec spec, double min, double max);
 
 // The scene's first clip, or kInvalidData "<port>: no animation" / "... has no frames".
 Result<const MotionClip*> FirstClip(const Scene& scene, const std::string& port);
