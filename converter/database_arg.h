@@ -13,8 +13,6 @@ namespace mocapfill::cli {
 using DatabaseBuildFlags = DatabaseBuildOptions;
 using mocapfill::DefaultDatabaseDir;
 using mocapfill::IsDatabaseFile;
-using mocapfill::ParseJointNameMap;
-using mocapfill::ReadJointNameMap;
 
 // Adds --rate, --map, --threads, --unit and --up bound to `flags`.
 void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags);

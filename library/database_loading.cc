@@ -4,12 +4,12 @@
 
 #include <atomic>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "formats/file_io.h"
 #include "formats/mfdb/mfdb_file.h"
 #include "formats/mfdb/motion_folder.h"
+#include "formats/name_map_json.h"
 #include "processing/retargeting/retarget_scene.h"
 
 #ifndef MOCAPFILL_SOURCE_DEFAULT_DB
@@ -66,23 +66,6 @@ std::vector<std::filesystem::path> InstalledBinaries() {
 
 }  // namespace
 
-Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& text, const std::string& origin) {
-  const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded() || !json.is_object())
-    return InvalidData(origin + ": a joint-name map must be a JSON object {\"source name\": \"database name\"}");
-  std::map<std::string, std::string> map;
-  for (const auto& [key, value] : json.items()) {
-    if (!value.is_string()) return InvalidData(origin + ": the value of \"" + key + "\" is not a string");
-    map[key] = value.get<std::string>();
-  }
-  return map;
-}
-
-Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& inline_or_path, const std::string& option) {
-  ASSIGN_OR_RETURN(const InlineOrFileText map, ReadInlineJsonOrFile(inline_or_path, option));
-  return ParseJointNameMap(map.text, map.origin);
-}
-
 Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& paths, const DatabaseBuildOptions& options,
                                               const ImportProgress& progress) {
   ASSIGN_OR_RETURN(const std::vector<std::string> files, ListMotionFiles(paths));
@@ -91,7 +74,7 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
   database_options.threads = options.threads;
   MotionDatabaseBuilder builder(database_options);
   if (!options.map.empty()) {
-    Result<std::map<std::string, std::string>> map = ReadJointNameMap(options.map);
+    Result<std::map<std::string, std::string>> map = ReadNameMap(options.map, "--map", kJointNameMapShape);
     if (!map.ok()) return map.status();
     builder.SetJointNameMap(std::move(map).value());
   }

@@ -29,14 +29,6 @@ struct DatabaseBuildOptions {
 // same names, and a defaulted argument would make its two-argument calls ambiguous.
 using ImportProgress = std::function<void(size_t done, size_t total)>;
 
-// Parses joint-name map JSON; errors start with `origin` (kInvalidData for bad JSON or
-// non-string values).
-Result<std::map<std::string, std::string>> ParseJointNameMap(const std::string& text, const std::string& origin);
-
-// A joint-name map given inline (text starting with '{') or as a JSON file. Errors name the
-// file or `option` (kInvalidData for bad JSON or non-string values, kIoError when unreadable).
-Result<std::map<std::string, std::string>> ReadJointNameMap(const std::string& inline_or_path,
-                                                            const std::string& option = "--map");
 
 // Imports every motion file under `paths` and builds a database. Clips of another rig than
 // the first file's are retargeted onto it. Errors carry the failing file's path.

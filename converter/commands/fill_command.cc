@@ -19,6 +19,7 @@
 #include "converter/std_streams.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
+#include "formats/name_map_json.h"
 #include "formats/pca/pca_file.h"
 #include "library/fill_report_json.h"
 #include "processing/graph/nodes/fill_schema.h"
@@ -48,8 +49,7 @@ const std::set<std::string> kOwnWay = {"rename", "rate_hz"};
 // --map: inline JSON (starting with '{') or a JSON file.
 Result<std::map<std::string, std::string>> ReadMapArg(const std::string& arg) {
   if (arg.empty()) return std::map<std::string, std::string>{};
-  ASSIGN_OR_RETURN(const InlineOrFileText map, ReadInlineJsonOrFile(arg, "--map"));
-  return ParseRigMapJson(map.text, map.origin);
+  return ReadNameMap(arg, "--map", kRigMapShape);
 }
 
 void PrintSummary(const SketchFillResult& result) {

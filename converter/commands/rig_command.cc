@@ -12,6 +12,7 @@
 #include "converter/import_flags.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
+#include "formats/name_map_json.h"
 #include "processing/retargeting/proportions.h"
 #include "processing/retargeting/rest_pose.h"
 #include "processing/retargeting/rig_mapping.h"
@@ -31,8 +32,7 @@ struct RigShowArgs {
 // The --map value: inline JSON when it starts with '{', else a file to read.
 Result<std::map<std::string, std::string>> ReadMap(const std::string& value) {
   if (value.empty()) return std::map<std::string, std::string>{};
-  ASSIGN_OR_RETURN(const InlineOrFileText map, ReadInlineJsonOrFile(value, "--map"));
-  return ParseRigMapJson(map.text, map.origin);
+  return ReadNameMap(value, "--map", kRigMapShape);
 }
 
 struct RigReport {

@@ -11,8 +11,6 @@
 //      overrides any pair.
 #include "processing/retargeting/rig_mapping.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <functional>
 #include <set>
@@ -254,12 +252,12 @@ AutoResult MapAutomatically(const RigStructure& rig, const std::vector<Eigen::Ve
 void CheckSides(const RigStructure& rig, const std::vector<Eigen::Vector3d>& pose, RigMapping& m) {
   const Skeleton& skeleton = rig.skeleton();
   if (pose.size() != static_cast<size_t>(skeleton.num_joints())) {
-    m.notes.push_back("no pose given: left and right decided by names");
+    m.notes.emplace_back("no pose given: left and right decided by names");
     return;
   }
   const std::optional<Eigen::Matrix3d> frame = rig.BodyFrame(m, pose);
   if (!frame) {
-    m.notes.push_back(
+    m.notes.emplace_back(
         "the pose does not show which way the rig faces (toes not ahead of the ankles, or the head not above the "
         "hips): left and right decided by names");
     return;
@@ -406,28 +404,6 @@ std::string UnmappedJointReason(const Skeleton& skeleton, const RigMapping& mapp
   if (hips >= 0 && head >= 0 && rig.IsAncestor(hips, joint) && rig.IsAncestor(joint, head))
     return name.lower_back ? "lower-back helper (spine offset)" : "extra spine or neck joint (folded into its neighbours)";
   return "not a canonical bone";
-}
-
-Result<std::map<std::string, std::string>> ParseRigMapJson(const std::string& json_text, const std::string& origin) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for a number like 1e999
-    return InvalidData(origin + ": not valid JSON: " + e.what());
-  }
-  if (!doc.is_object())
-    return InvalidData(origin + ": a rig map is a JSON object {\"joint\": \"humanoid bone\", ...}");
-  std::map<std::string, std::string> out;
-  for (const auto& [joint, bone] : doc.items()) {
-    if (bone.is_null()) {
-      out[joint] = "";
-    } else if (bone.is_string()) {
-      out[joint] = bone.get<std::string>();
-    } else {
-      return InvalidData(origin + ": joint " + Quoted(joint) + ": the value must be a humanoid bone name or \"\"");
-    }
-  }
-  return out;
 }
 
 }  // namespace mocapfill

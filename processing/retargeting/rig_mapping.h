@@ -53,9 +53,4 @@ Result<RigMapping> MapHumanoid(const Skeleton& skeleton, const std::vector<Eigen
 // "" for a mapped joint.
 std::string UnmappedJointReason(const Skeleton& skeleton, const RigMapping& mapping, int joint);
 
-// Parses a rig map from JSON text: an object {"joint": "bone", ...} ("" or null leaves the
-// joint unmapped). Processing reads no files: the caller reads a map file and passes its
-// text. `origin` names where the text came from in messages (a file name, or "--map").
-Result<std::map<std::string, std::string>> ParseRigMapJson(const std::string& json_text, const std::string& origin);
-
 }  // namespace mocapfill

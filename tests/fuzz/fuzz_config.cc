@@ -2,11 +2,11 @@
 // name map.
 #include <string>
 
-#include "converter/database_arg.h"
-#include "library/pipeline/file_nodes.h"
-#include "library/pipeline/pipeline_file.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/file_io.h"
+#include "formats/name_map_json.h"
+#include "library/pipeline/file_nodes.h"
+#include "library/pipeline/pipeline_file.h"
 #include "processing/graph/graph.h"
 #include "processing/retargeting/rig_mapping.h"
 #include "tests/fuzz/fuzz_targets.h"
@@ -38,8 +38,7 @@ int FuzzPipeline(const uint8_t* data, size_t size) {
 
 int FuzzMaps(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  (void)cli::ParseJointNameMap(text, "fuzz.json");
-  Result<std::map<std::string, std::string>> rig_map = ParseRigMapJson(text, "fuzz.json");
+  Result<std::map<std::string, std::string>> rig_map = ParseNameMapJson(text, "fuzz.json", kRigMapShape);
   if (rig_map.ok() && FixtureRig() != nullptr) {
     RigMapOptions options;
     options.overrides = *rig_map;

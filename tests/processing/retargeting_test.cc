@@ -7,6 +7,7 @@
 #include <string>
 
 #include "formats/motion_io.h"
+#include "formats/name_map_json.h"
 #include "processing/retargeting/proportions.h"
 #include "processing/retargeting/rest_pose.h"
 #include "processing/retargeting/rig_mapping.h"
@@ -214,9 +215,10 @@ TEST(RigMappingErrors, BadMaps) {
   ASSERT_TRUE(m.ok()) << m.status().message();
   EXPECT_FALSE(m->has(B::kLeftToes));
 
-  EXPECT_FALSE(ParseRigMapJson("[1, 2]", "--map").ok());
-  EXPECT_FALSE(ParseRigMapJson("{\"a\": 3}", "--map").ok());
-  Result<std::map<std::string, std::string>> parsed = ParseRigMapJson("{\"a\": \"hips\", \"b\": null}", "map.json");
+  EXPECT_FALSE(ParseNameMapJson("[1, 2]", "--map", kRigMapShape).ok());
+  EXPECT_FALSE(ParseNameMapJson("{\"a\": 3}", "--map", kRigMapShape).ok());
+  Result<std::map<std::string, std::string>> parsed =
+      ParseNameMapJson("{\"a\": \"hips\", \"b\": null}", "map.json", kRigMapShape);
   ASSERT_TRUE(parsed.ok());
   EXPECT_EQ(parsed->at("a"), "hips");
   EXPECT_EQ(parsed->at("b"), "");
