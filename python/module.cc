@@ -270,6 +270,7 @@ void BindMethods(py::module_& m) {
       .def_readwrite("texture", &api::FillOptions::texture)
       .def_readwrite("coverage", &api::FillOptions::coverage)
       .def_readwrite("threads", &api::FillOptions::threads)
+      .def_readwrite("more", &api::FillOptions::more)
       .def_property(
           "pca_model", [](const api::FillOptions& o) { return o.pca_model; },
           [](api::FillOptions& o, const api::PcaModel* model) { o.pca_model = model; }, py::keep_alive<1, 2>());

@@ -18,7 +18,7 @@ struct FillOptions {
   std::string method = "hierarchical";  // hierarchical, fragment, nn, mean, pca, hybrid
   // Rig map overrides: sketch joint -> canonical bone (VRM name) or database joint; "" unmaps.
   std::map<std::string, std::string> map;
-  std::string rest = "auto";     // the sketch rig's rest pose: auto, bind, zero, first-frame
+  std::string rest = "auto";     // the sketch rig's rest pose: auto, bind, zero, mean, first-frame
   double output_rate_hz = 0.0;   // 0 = the sketch's own rate
   std::vector<std::string> keep;           // only these joints stay keyed
   std::vector<std::string> synthesize;     // joints synthesised even when keyed
@@ -28,6 +28,11 @@ struct FillOptions {
   std::string coverage = "blend";  // blend: poorly covered stretches fade toward the mean; warn: only report
   const PcaModel* pca_model = nullptr;  // pca/hybrid: nullptr = built from the database
   int threads = 0;                      // 0 = every core
+  // Any other option of the fill by its pipeline name, as text: {"candidates", "64"},
+  // {"coverage_poor", "0.06"}, {"dial", "1=+1.5"}, {"gains", "1,1,1.5"} (`mocapfill run
+  // --list-nodes` lists them under "fill"). Checked as the command line checks its flags;
+  // naming an option the fields above set is an error ("given twice").
+  std::map<std::string, std::string> more;
 };
 
 struct FillResult {

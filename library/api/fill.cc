@@ -1,32 +1,61 @@
 #include "mocapfill/fill.h"
 
+#include <algorithm>
+
 #include "library/api/access.h"
 #include "library/fill_report_json.h"
+#include "processing/graph/nodes/fill_schema.h"
+#include "processing/graph/nodes/nodes.h"
 #include "processing/sketch_fill/sketch_fill.h"
 
 namespace mocapfill::api {
 
 namespace {
 
+graph::OptionValue Strings(const std::vector<std::string>& items) {
+  std::vector<graph::OptionValue> values;
+  for (const std::string& item : items) values.push_back(graph::OptionValue::String(item));
+  return graph::OptionValue::Array(std::move(values));
+}
+
+// The options through the fill's schema (graph/nodes/fill_schema.h), as the command line and
+// pipelines take them: the same defaults, ranges and messages ('option "threads": ...').
 Result<SketchFillOptions> ToSketchFillOptions(const FillOptions& options) {
-  SketchFillOptions out;
-  ASSIGN_OR_RETURN(out.fill.method, ParseFillMethod(options.method));
-  ASSIGN_OR_RETURN(out.rest, ParseRestSource(options.rest));
   if (options.coverage != "blend" && options.coverage != "warn")
-    return InvalidArgument("coverage: expected blend or warn, got '" + options.coverage + "'");
-  if (options.output_rate_hz < 0.0) return InvalidArgument("output_rate_hz: must be 0 (the sketch's) or positive");
-  if (options.threads < 0) return InvalidArgument("threads: must be 0 (every core) or positive");
-  out.fill.texture = options.texture;
-  out.fill.coverage.blend = options.coverage == "blend";
-  out.fill.threads = options.threads;
-  RETURN_IF_ERROR(out.fill.Validate());
-  out.map = options.map;
-  out.output_rate_hz = options.output_rate_hz;
-  out.keep = options.keep;
-  out.synthesize = options.synthesize;
-  out.position_keys = options.position_keys;
-  out.plant_feet = options.plant_feet;
-  return out;
+    return InvalidArgument("option \"coverage\": expected blend or warn, got '" + options.coverage + "'");
+  std::vector<std::string> map_keys;
+  std::vector<graph::OptionValue> map_values;
+  for (const auto& [joint, bone] : options.map) {
+    map_keys.push_back(joint);
+    map_values.push_back(graph::OptionValue::String(bone));
+  }
+  std::vector<std::pair<std::string, graph::OptionValue>> given = {
+      {"method", graph::OptionValue::String(options.method)},
+      {"rename", graph::OptionValue::Object(std::move(map_keys), std::move(map_values))},
+      {"rest", graph::OptionValue::String(options.rest)},
+      {"rate_hz", graph::OptionValue::Number(options.output_rate_hz, false)},
+      {"keep", Strings(options.keep)},
+      {"synthesize", Strings(options.synthesize)},
+      {"position_keys", Strings(options.position_keys)},
+      {"plant_feet", graph::OptionValue::Bool(options.plant_feet)},
+      {"texture", graph::OptionValue::Bool(options.texture)},
+      {"blend_poor_coverage", graph::OptionValue::Bool(options.coverage == "blend")},
+      {"threads", graph::OptionValue::Integer(options.threads)},
+  };
+  const graph::NodeTypeSpec spec = graph::FillNodeSpec();
+  for (const auto& [name, text] : options.more) {
+    const auto option = std::find_if(spec.options.begin(), spec.options.end(),
+                                     [&](const graph::OptionSpec& o) { return o.name == name; });
+    // An unknown name goes through as text for CheckNodeOptions to list the valid ones.
+    if (option == spec.options.end()) {
+      given.emplace_back(name, graph::OptionValue::String(text));
+      continue;
+    }
+    ASSIGN_OR_RETURN(graph::OptionValue value, graph::OptionValueFromText(*option, text, "option \"" + name + "\""));
+    given.emplace_back(name, std::move(value));
+  }
+  ASSIGN_OR_RETURN(const graph::NodeOptions checked, graph::CheckNodeOptions(spec, given));
+  return graph::SketchFillOptionsFrom(checked);
 }
 
 }  // namespace

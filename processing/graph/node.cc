@@ -1,9 +1,79 @@
 #include "processing/graph/node.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace mocapfill::graph {
+
+namespace {
+
+std::vector<std::string> SplitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  if (text.empty()) return parts;
+  std::stringstream stream(text);
+  for (std::string part; std::getline(stream, part, ',');) parts.push_back(part);
+  return parts;
+}
+
+// A number written as text, integral when it has no fraction or exponent; a string value
+// otherwise, which the schema check then refuses with its own message ("expected a number").
+OptionValue NumberOrText(const std::string& text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  // A leading '+' (a dial's "1=+1.5") is a sign from_chars does not take.
+  const char* begin = text.size() > 1 && text[0] == '+' && text[1] != '-' ? text.data() + 1 : text.data();
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (ec != std::errc() || ptr != end || text.empty()) return OptionValue::String(text);
+  return OptionValue::Number(value, text.find_first_of(".eE") == std::string::npos);
+}
+
+OptionValue FromText(const OptionSpec& spec, const std::string& text) {
+  switch (spec.type) {
+    case OptionType::kBool:
+      if (spec.words.size() == 2 && text == spec.words[0]) return OptionValue::Bool(true);
+      if (spec.words.size() == 2 && text == spec.words[1]) return OptionValue::Bool(false);
+      if (text == "true" || text == "on" || text == "1") return OptionValue::Bool(true);
+      if (text == "false" || text == "off" || text == "0") return OptionValue::Bool(false);
+      return OptionValue::String(text);
+    case OptionType::kInt:
+    case OptionType::kNumber: return NumberOrText(text);
+    case OptionType::kString:
+    case OptionType::kPath: return OptionValue::String(text);
+    case OptionType::kNumberList:
+    case OptionType::kStringList: {
+      std::vector<OptionValue> items;
+      for (const std::string& part : SplitCommas(text))
+        items.push_back(spec.type == OptionType::kNumberList ? NumberOrText(part) : OptionValue::String(part));
+      return OptionValue::Array(std::move(items));
+    }
+    case OptionType::kNumberMap:
+    case OptionType::kStringMap: {
+      std::vector<std::string> keys;
+      std::vector<OptionValue> values;
+      for (const std::string& part : SplitCommas(text)) {
+        const size_t eq = part.find('=');
+        const std::string value = eq == std::string::npos ? "" : part.substr(eq + 1);
+        keys.push_back(part.substr(0, eq));
+        values.push_back(spec.type == OptionType::kNumberMap ? NumberOrText(value) : OptionValue::String(value));
+      }
+      return OptionValue::Object(std::move(keys), std::move(values));
+    }
+  }
+  return OptionValue::String(text);
+}
+
+}  // namespace
+
+Result<OptionValue> OptionValueFromText(const OptionSpec& spec, const std::string& text, const std::string& label) {
+  if (spec.type == OptionType::kNumberMap || spec.type == OptionType::kStringMap)
+    for (const std::string& item : SplitCommas(text))
+      if (item.find('=') == std::string::npos)
+        return InvalidArgument(label + ": \"" + item + "\": expected <key>=<value>, e.g. " +
+                               (spec.type == OptionType::kNumberMap ? "1=+2.0" : "Hip=hips"));
+  return FromText(spec, text);
+}
 
 const char* PortTypeName(PortType type) {
   switch (type) {

@@ -81,6 +81,13 @@ struct OptionSpec {
 // message such as `expected a number >= 1, got 0` (no node or option prefix).
 Status CheckOption(const OptionSpec& spec, const OptionValue& value);
 
+// An option's value written as text, as the command line and the API's option maps give it:
+// numbers ("+1.5" too), "true"/"on"/"1" and "false"/"off"/"0" (and the spec's `words`) for
+// booleans, comma-separated lists, "key=value,..." maps. Text that is not of the option's type
+// stays a string for CheckOption to refuse with its message; a map item without '=' is
+// refused here (kInvalidArgument starting with `label`).
+Result<OptionValue> OptionValueFromText(const OptionSpec& spec, const std::string& text, const std::string& label);
+
 // The options of one node after validation: every spec'd option with its given or default
 // value. Getters must only be called with names of the node type's specs.
 class NodeOptions {

@@ -37,21 +37,37 @@ from ._mocapfill import (  # noqa: F401
 from ._mocapfill import _fill, _FillOptions, _run_pipeline
 
 
+def _option_text(value):
+    """A keyword argument as the fill's option text: true/false, comma lists, key=value maps."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, dict):
+        return ",".join("%s=%s" % (k, _option_text(v)) for k, v in value.items())
+    if isinstance(value, (list, tuple)):
+        return ",".join(_option_text(v) for v in value)
+    return str(value)
+
+
 def fill(sketch, database, method="hierarchical", map=None, rest="auto", rate_hz=0.0, keep=None,
          synthesize=None, position_keys=None, feet="plant", texture=True, coverage="blend", pca=None,
-         threads=0):
+         threads=0, **options):
     """Fills the sketch's missing joints from ``database``; returns ``(scene, report)``.
 
     The sketch's keyed joints (those with ``rotation_keys``) are kept at their keys; every
     other mapped joint is synthesised. ``report`` is the dict ``mocapfill fill --report``
     writes (key errors at the sketch's exact key times, fragment sources, coverage, timings).
-    ``database`` may be a Database or anything Database.open takes.
+    ``database`` may be a Database or anything Database.open takes. Any other option of the
+    fill by its pipeline name (``mocapfill.pipeline_node_types()``, node type fill), e.g.
+    ``candidates=64``, ``coverage_poor=0.06``, ``dial={1: 1.5}``, ``gains=[1, 1, 1.5]``,
+    checked as the command line checks its flags.
     """
     if not isinstance(database, Database):
         database = Database.open([database] if isinstance(database, str) else list(database))
     if feet not in ("plant", "free"):
         raise UsageError("feet: expected 'plant' or 'free', got %r" % (feet,))
+    more = {name: _option_text(value) for name, value in options.items()}
     options = _FillOptions()
+    options.more = more
     options.method = method
     options.map = dict(map or {})
     options.rest = rest
@@ -83,7 +99,8 @@ Database.open = staticmethod(_open)
 Database.default = staticmethod(lambda progress=None: _open(None, progress=progress))
 
 __all__ = ["Clip", "Database", "Error", "InputError", "OutputError", "PcaModel", "ProcessingError", "Scene",
-           "UsageError", "convert", "default_database_path", "fill", "filter", "load", "retarget", "save", "__version__"]
+           "UsageError", "convert", "default_database_path", "describe_pipeline", "fill", "filter", "load",
+           "pipeline_node_types", "retarget", "run_pipeline", "save", "__version__"]
 
 
 def run_pipeline(path, sets=None):

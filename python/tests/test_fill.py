@@ -142,3 +142,18 @@ def test_run_pipeline_fills_as_the_fill_call(fixtures, sketch, default_db, tmp_p
     with pytest.raises(mocapfill.UsageError, match="nosuchnode"):
         mocapfill.run_pipeline(pipeline, sets=["nosuchnode.path=x.glb"])
     assert "pca_edit" in mocapfill.pipeline_node_types()
+
+
+def test_fill_takes_every_option_of_the_schema(sketch, default_db):
+    """Options beyond the named arguments go through the fill's schema by name, with its checks."""
+    _, few = mocapfill.fill(sketch, default_db, candidates=8, blend=1, texture=False)
+    _, many = mocapfill.fill(sketch, default_db, texture=False)
+    print("fragments blended: %s with blend=1, %s by default" % (
+        max(f["blended"] for f in few["fragments"]), max(f["blended"] for f in many["fragments"])))
+    assert max(f["blended"] for f in few["fragments"]) == 1 < max(f["blended"] for f in many["fragments"])
+    with pytest.raises(mocapfill.UsageError, match=r'option "candidates": expected an integer in \[1, 1024\], got 0'):
+        mocapfill.fill(sketch, default_db, candidates=0)
+    with pytest.raises(mocapfill.UsageError, match="unknown option"):
+        mocapfill.fill(sketch, default_db, candidate=8)
+    with pytest.raises(mocapfill.UsageError, match="given twice"):
+        mocapfill.fill(sketch, default_db, plant_feet=False)
