@@ -1,6 +1,7 @@
 // Documented exit codes of the mocapfill CLI (see README "Exit codes").
 #pragma once
 
+#include "library/failure_class.h"
 #include "processing/core/status.h"
 
 namespace mocapfill::cli {
@@ -13,8 +14,9 @@ enum ExitCode : int {
   kExitOutput = 4,      // an output file could not be written, or would overwrite an input
 };
 
-// Where a failure happened decides between "input" and "output" for I/O errors.
-enum class Stage { kInput, kProcessing, kOutput };
+// Where a failure happened decides between "input" and "output" for I/O errors (the API's
+// classes are the same: library/failure_class.h).
+using Stage = FailureStage;
 
 ExitCode ExitCodeFor(const Status& status, Stage stage);
 

@@ -23,16 +23,6 @@ struct RunArgs {
   bool dry_run = false, list_nodes = false, json = false;
 };
 
-// Where a node's failure belongs: sources read input, sinks write output.
-Stage StageOf(graph::NodeRole role) {
-  switch (role) {
-    case graph::NodeRole::kSource: return Stage::kInput;
-    case graph::NodeRole::kSink: return Stage::kOutput;
-    case graph::NodeRole::kProcess: return Stage::kProcessing;
-  }
-  return Stage::kProcessing;
-}
-
 // Multi-line validation messages get the pipeline file on every line.
 int Fail(const std::string& file, const Status& status, Stage stage) {
   std::istringstream lines(status.message());

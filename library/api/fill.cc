@@ -43,7 +43,9 @@ Result<SketchFillOptions> ToSketchFillOptions(const FillOptions& options) {
       {"threads", graph::OptionValue::Integer(options.threads)},
   };
   const graph::NodeTypeSpec spec = graph::FillNodeSpec();
-  for (const auto& [name, text] : options.more) {
+  for (const auto& entry : options.more) {
+    const std::string& name = entry.first;  // a named reference: clang 14 captures no structured binding
+    const std::string& text = entry.second;
     const auto option = std::find_if(spec.options.begin(), spec.options.end(),
                                      [&](const graph::OptionSpec& o) { return o.name == name; });
     // An unknown name goes through as text for CheckNodeOptions to list the valid ones.

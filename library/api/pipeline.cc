@@ -9,16 +9,6 @@ namespace mocapfill::api {
 
 namespace {
 
-// Where a node's failure belongs, as `mocapfill run` says: sources read input, sinks write output.
-FailureStage StageOf(graph::NodeRole role) {
-  switch (role) {
-    case graph::NodeRole::kSource: return FailureStage::kInput;
-    case graph::NodeRole::kSink: return FailureStage::kOutput;
-    case graph::NodeRole::kProcess: return FailureStage::kProcessing;
-  }
-  return FailureStage::kProcessing;
-}
-
 struct LoadedPipeline {
   PipelineFile file;
   graph::Graph graph;

@@ -117,4 +117,13 @@ std::string RunReportJson(const PipelineFile& file, const graph::GraphRun& run) 
   return json.dump(2) + "\n";
 }
 
+FailureStage StageOf(graph::NodeRole role) {
+  switch (role) {
+    case graph::NodeRole::kSource: return FailureStage::kInput;
+    case graph::NodeRole::kSink: return FailureStage::kOutput;
+    case graph::NodeRole::kProcess: return FailureStage::kProcessing;
+  }
+  return FailureStage::kProcessing;
+}
+
 }  // namespace mocapfill

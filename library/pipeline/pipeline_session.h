@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "library/failure_class.h"
 #include "library/pipeline/pipeline_file.h"
 #include "processing/graph/graph.h"
 
@@ -21,6 +22,9 @@ std::string DescribePlan(const PipelineFile& file, const graph::Graph& graph);
 // Every node type: ports and options with types, defaults, units and ranges (--list-nodes;
 // the README and docs/pipeline.md tables follow it).
 std::string DescribeNodeTypes(const graph::NodeRegistry& registry);
+
+// Where a node's failure belongs: sources read input, sinks write output.
+FailureStage StageOf(graph::NodeRole role);
 
 // {"pipeline", "ok", "error", "total_seconds", "nodes": [{"id", "type", "seconds", "warnings"}]}.
 std::string RunReportJson(const PipelineFile& file, const graph::GraphRun& run);
