@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "processing/core/rotation.h"
+
 namespace mocapfill {
 
 void ComputeWorldPose(const Skeleton& skeleton, const MotionClip& clip, int frame, WorldPose& out) {
@@ -49,6 +51,39 @@ double RestPoseExtent(const Skeleton& skeleton, int axis) {
     }
   }
   return skeleton.num_joints() ? hi - lo : 0.0;
+}
+
+std::vector<Eigen::Quaterniond> JointMeanRotations(const Skeleton& skeleton, std::span<const MotionClip* const> clips,
+                                                   int root_joint) {
+  const int joints = skeleton.num_joints();
+  std::vector<Eigen::Quaterniond> means(joints, Eigen::Quaterniond::Identity());
+  if (clips.empty()) return means;
+  // Frame-major passes over all joints at once (the clip's memory order).
+  std::vector<Eigen::Quaterniond> seeds(joints);
+  for (int j = 0; j < joints; ++j) seeds[j] = clips.front()->rotation(0, j);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<Eigen::Vector4d> sums(joints, Eigen::Vector4d::Zero());
+    for (const MotionClip* clip : clips)
+      for (int f = 0; f < clip->num_frames; ++f)
+        for (int j = 0; j < joints; ++j) AccumulateSignAligned(clip->rotation(f, j), seeds[j], sums[j]);
+    for (int j = 0; j < joints; ++j) seeds[j] = NormalisedOrSeed(sums[j], seeds[j]);
+  }
+  for (int j = 0; j < joints; ++j) means[j] = seeds[j].normalized();
+  if (root_joint < 0) return means;
+  std::vector<int> chain;  // the root's ancestors, outermost first
+  for (int p = skeleton.parent(root_joint); p != kNoParent; p = skeleton.parent(p)) chain.insert(chain.begin(), p);
+  std::vector<Eigen::Quaterniond> tilts;
+  for (const MotionClip* clip : clips)
+    for (int f = 0; f < clip->num_frames; ++f) {
+      Eigen::Quaterniond world = Eigen::Quaterniond::Identity();
+      for (int a : chain) world = world * clip->rotation(f, a);
+      double heading = 0.0;
+      Eigen::Quaterniond tilt;
+      SplitHeading(world * clip->rotation(f, root_joint), heading, tilt);
+      tilts.push_back(tilt);
+    }
+  means[root_joint] = MeanRotation(tilts);
+  return means;
 }
 
 }  // namespace mocapfill

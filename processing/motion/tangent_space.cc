@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
 
 namespace mocapfill {
@@ -61,31 +62,7 @@ int FindMotionRoot(const Skeleton& skeleton, std::span<const MotionClip* const> 
 
 TangentReference ComputeTangentReference(const Skeleton& skeleton, std::span<const MotionClip* const> clips,
                                          int root_joint) {
-  const int joints = skeleton.num_joints();
-  TangentReference reference;
-  reference.root_joint = root_joint;
-  reference.joint_means.assign(joints, Eigen::Quaterniond::Identity());
-  if (clips.empty()) return reference;
-  // Frame-major passes over all joints at once (the clip's memory order).
-  std::vector<Eigen::Quaterniond> seeds(joints);
-  for (int j = 0; j < joints; ++j) seeds[j] = clips.front()->rotation(0, j);
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<Eigen::Vector4d> sums(joints, Eigen::Vector4d::Zero());
-    for (const MotionClip* clip : clips)
-      for (int f = 0; f < clip->num_frames; ++f)
-        for (int j = 0; j < joints; ++j) AccumulateSignAligned(clip->rotation(f, j), seeds[j], sums[j]);
-    for (int j = 0; j < joints; ++j) seeds[j] = NormalisedOrSeed(sums[j], seeds[j]);
-  }
-  for (int j = 0; j < joints; ++j) reference.joint_means[j] = seeds[j].normalized();
-  if (root_joint >= 0) {
-    std::vector<Eigen::Quaterniond> tilts;
-    for (const MotionClip* clip : clips) {
-      const RootTrajectory trajectory = ExtractRootTrajectory(skeleton, *clip, root_joint);
-      tilts.insert(tilts.end(), trajectory.tilt.begin(), trajectory.tilt.end());
-    }
-    reference.joint_means[root_joint] = MeanRotation(tilts);
-  }
-  return reference;
+  return TangentReference{JointMeanRotations(skeleton, clips, root_joint), root_joint};
 }
 
 RootTrajectory ExtractRootTrajectory(const Skeleton& skeleton, const MotionClip& clip, int root_joint) {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "processing/core/rotation.h"
+#include "processing/core/kinematics.h"
 
 namespace mocapfill {
 
@@ -99,7 +99,8 @@ RigRest BindPose(const Scene& scene, const Skin& skin) {
 // The mean pose of the scene's first clip, its root at the mapped hips.
 RigRest ClipMeanPose(const Scene& scene, const RigMapping& mapping) {
   const int root = mapping.joint(HumanoidBone::kHips);
-  return MeanPoseRest(scene.skeleton, ClipJointMeans(scene.skeleton, scene.clips.front(), root), root);
+  const MotionClip* clip = &scene.clips.front();
+  return MeanPoseRest(scene.skeleton, JointMeanRotations(scene.skeleton, {&clip, 1}, root), root);
 }
 
 RigRest FirstFrame(const Scene& scene) {
@@ -111,13 +112,6 @@ RigRest FirstFrame(const Scene& scene) {
   }
   rest.source = RestSource::kFirstFrame;
   return rest;
-}
-
-// World rotation of `joint`'s parent at frame f (identity for a root).
-Eigen::Quaterniond ParentWorldRotation(const Skeleton& skeleton, const MotionClip& clip, int f, int joint) {
-  Eigen::Quaterniond world = Eigen::Quaterniond::Identity();
-  for (int p = skeleton.parent(joint); p != kNoParent; p = skeleton.parent(p)) world = clip.rotation(f, p) * world;
-  return world;
 }
 
 }  // namespace
@@ -179,22 +173,6 @@ RigRest MeanPoseRest(const Skeleton& skeleton, const std::vector<Eigen::Quaterni
   }
   rest.source = RestSource::kMean;
   return rest;
-}
-
-std::vector<Eigen::Quaterniond> ClipJointMeans(const Skeleton& skeleton, const MotionClip& clip, int root_joint) {
-  std::vector<Eigen::Quaterniond> means(skeleton.num_joints());
-  std::vector<Eigen::Quaterniond> track(clip.num_frames);
-  for (int j = 0; j < skeleton.num_joints(); ++j) {
-    for (int f = 0; f < clip.num_frames; ++f) {
-      track[f] = clip.rotation(f, j);
-      if (j == root_joint) {
-        double heading = 0.0;
-        SplitHeading(ParentWorldRotation(skeleton, clip, f, j) * track[f], heading, track[f]);
-      }
-    }
-    means[j] = MeanRotation(track);
-  }
-  return means;
 }
 
 bool IsStandingPose(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& pose) {

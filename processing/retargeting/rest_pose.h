@@ -49,15 +49,11 @@ bool IsStandingPose(const Skeleton& skeleton, const RigMapping& mapping, const R
 // when it does (IsStandingPose is this being empty).
 std::string StandingProblem(const Skeleton& skeleton, const RigMapping& mapping, const RigRest& pose);
 
-// A mean pose as a rest: every joint at its mean local rotation (`joint_means`, per joint),
-// except `root_joint` (-1: none), whose entry is its mean world tilt (heading removed, as
-// ComputeTangentReference and the database store it): the root stands upright at that tilt
-// facing no particular way. Local translations are the skeleton's.
+// A mean pose as a rest: every joint at its mean local rotation (`joint_means`, per joint, as
+// JointMeanRotations gives them and the database stores them), except `root_joint` (-1:
+// none), whose entry is its mean world tilt: the root stands upright at that tilt facing no
+// particular way. Local translations are the skeleton's.
 RigRest MeanPoseRest(const Skeleton& skeleton, const std::vector<Eigen::Quaterniond>& joint_means, int root_joint);
-
-// The joint means of one clip in MeanPoseRest's form (MeanRotation per joint over every
-// frame; the root's mean world tilt).
-std::vector<Eigen::Quaterniond> ClipJointMeans(const Skeleton& skeleton, const MotionClip& clip, int root_joint);
 
 // Chooses the rest pose of `scene`'s skeleton. kBind needs a skin (joints outside every skin
 // keep their zero-pose rotations, placed relative to the bound ones), kMean and kFirstFrame
