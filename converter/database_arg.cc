@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "converter/console.h"
+#include "formats/units_axes.h"
 
 namespace mocapfill::cli {
 
@@ -17,8 +18,8 @@ void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags) {
   command.add_option("--threads", flags.threads, "Import/build threads (0 = all cores)")->check(CLI::NonNegativeNumber);
   // --unit and --up as in AddImportFlags; its --rate (keyed-input sampling) is left to
   // detection here, because --rate names the database's working rate.
-  command.add_option("--unit", flags.import.unit, "Length unit of the inputs: auto, m, cm, mm, in, ft, cmu")
-      ->check(CLI::IsMember({"auto", "m", "cm", "mm", "in", "ft", "cmu"}))
+  command.add_option("--unit", flags.import.unit, "Length unit of the inputs: " + UnitChoicesText())
+      ->check(CLI::IsMember(UnitChoices()))
       ->capture_default_str();
   command.add_option("--up", flags.import.up, "Up axis of the inputs: auto, y or z")
       ->check(CLI::IsMember({"auto", "y", "z"}))

@@ -1,12 +1,14 @@
 #include "converter/import_flags.h"
 
+#include "formats/units_axes.h"
+
 namespace mocapfill::cli {
 
 void AddImportFlags(CLI::App& command, ImportOptions& options) {
   command.add_option("--unit", options.unit,
-                     "Length unit of the input: auto, m, cm, mm, in, ft, cmu (BVH default: cm, "
-                     "or detected from skeleton height when implausible)")
-      ->check(CLI::IsMember({"auto", "m", "cm", "mm", "in", "ft", "cmu"}))
+                     "Length unit of the input: " + UnitChoicesText() +
+                         " (BVH default: cm, or detected from skeleton height when implausible)")
+      ->check(CLI::IsMember(UnitChoices()))
       ->capture_default_str();
   command.add_option("--up", options.up, "Up axis of the input: auto, y or z (z-up is rotated to glTF's y-up)")
       ->check(CLI::IsMember({"auto", "y", "z"}))

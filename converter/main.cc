@@ -15,7 +15,6 @@
 #include <string_view>
 
 #include "converter/verb_dispatch.h"
-#include "formats/large_buffer.h"
 #include "formats/motion_io.h"
 
 namespace {
@@ -23,10 +22,6 @@ namespace {
 using namespace mocapfill::cli;
 
 constexpr Verb kFormatVerbs[] = {{"convert", AddConvertCommand}, {"inspect", AddInspectCommand}};
-
-// The heap a conversion uses, mapped at once instead of faulted in a page at a time
-// (converting a Bandai clip took it to 460 KB).
-constexpr size_t kStartHeapBytes = size_t{512} << 10;
 
 // Whether any argument names an Assimp input. An option value that merely looks like one
 // only sends the command line to mocapfill-full, which runs it just the same.
@@ -47,7 +42,7 @@ bool AsksToRetarget(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   if (NamedVerb(argc, argv, kFormatVerbs) != nullptr && !NamesAssimpInput(argc, argv) && !AsksToRetarget(argc, argv)) {
-    mocapfill::ReserveMappedHeap(kStartHeapBytes);
+    mocapfill::PrepareConversionProcess();
     return RunCommandLine(argc, argv, kFormatVerbs);
   }
   return ExecFullExecutable(argv);

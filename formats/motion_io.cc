@@ -4,7 +4,7 @@
 #include "formats/atomic_writer.h"
 #include "formats/bvh/bvh_reader.h"
 #include "formats/bvh/bvh_writer.h"
-#include "formats/bvh_glb/bvh_to_glb.h"
+#include "formats/fast_convert/fast_convert.h"
 #include "formats/file_io.h"
 #include "formats/gltf/gltf_reader.h"
 #include "formats/gltf/gltf_writer.h"
@@ -18,10 +18,6 @@ const char* const kAssimpExtensions[] = {".fbx", ".dae", ".x", ".3ds", ".ms3d", 
 Status WriteOut(AtomicWriter* writer, const std::string& path, std::initializer_list<std::string_view> parts) {
   if (writer != nullptr) return writer->Write(path, parts);
   return WriteFileAtomicParts(path, parts);
-}
-
-size_t MapMinBytes(const ImportOptions& options) {
-  return options.leave_input_to_exit ? kMapLeftInputMinBytes : kMapFileMinBytes;
 }
 
 bool IsAssimpExtension(const std::string& ext) {
@@ -62,18 +58,8 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options) 
   if (IsAssimpExtension(ext)) return ReadWithAssimpModule(path, options);
   if (ext != ".bvh" && ext != ".gltf" && ext != ".glb")
     return Unsupported(path + ": unknown input extension '" + ext + "' (expected .bvh, .gltf, .glb or .fbx)");
-  if (ext == ".bvh") {
-    ASSIGN_OR_RETURN(FileText text, ReadFileText(path, MapMinBytes(options)));
-    Result<Scene> scene = ReadBvh(text.view(), path, options);
-    if (text.intact()) {
-      if (options.leave_input_to_exit) text.LeaveToExit();
-      return scene;
-    }
-    // The file was truncated while mapped: what it holds now, read afresh, is the input.
-    ASSIGN_OR_RETURN(const LargeBuffer bytes, ReadFileToBuffer(path));
-    return ReadBvh(bytes.view(), path, options);
-  }
   ASSIGN_OR_RETURN(std::string bytes, ReadFileBytes(path));
+  if (ext == ".bvh") return ReadBvh(bytes, path, options);
   return ReadGltf(bytes, path, options);
 }
 
@@ -98,24 +84,13 @@ Status ExportFile(const Scene& scene, const std::string& path, const ExportOptio
 }
 
 ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
-                          const ExportOptions& export_options, AtomicWriter* writer) {
+                          const ExportOptions& export_options, const ConvertOptions& convert_options,
+                          AtomicWriter* writer) {
+  const auto export_scene = [&](const Scene& scene) { return ExportFile(scene, output, export_options, writer); };
+  if (std::optional<ConvertResult> converted = fast_convert::ConvertBvh(
+          input, output, import_options, export_options, convert_options, writer, export_scene))
+    return std::move(*converted);
   ConvertResult result;
-  if (LowerExtension(input) == ".bvh" && LowerExtension(output) == ".glb") {
-    Result<FileText> text = ReadFileText(input, MapMinBytes(import_options));
-    if (!text.ok()) {
-      result.status = text.status();
-      return result;
-    }
-    std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text->view(), input, import_options, export_options);
-    // A file truncated while mapped goes the clip path, which reads it again.
-    if (glb && text->intact()) {
-      const std::string_view tail(reinterpret_cast<const char*>(glb->tail.data()), glb->tail.size());
-      result.status = WriteOut(writer, output, {glb->head, glb->tracks.view(), tail});
-      result.failed_writing = !result.status.ok();
-      if (import_options.leave_input_to_exit) text->LeaveToExit();
-      return result;
-    }
-  }
   Result<Scene> scene = ImportFile(input, import_options);
   if (!scene.ok()) {
     result.status = scene.status();
@@ -126,5 +101,9 @@ ConvertResult ConvertFile(const std::string& input, const std::string& output, c
   result.failed_writing = !result.status.ok();
   return result;
 }
+
+void PrepareConversionProcess() { fast_convert::PrepareProcess(); }
+
+void PrepareBatchConversion() { fast_convert::PrepareBatch(); }
 
 }  // namespace mocapfill

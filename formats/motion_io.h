@@ -15,8 +15,8 @@ class AtomicWriter;  // formats/atomic_writer.h
 
 struct ImportOptions {
   // Length unit of the source: "auto" (format default, or detected from skeleton height
-  // when that default is implausible), or one of "m", "cm", "mm", "in", "ft", "cmu"
-  // (the CMU/cgspeed unit, 0.056444 m). Everything is converted to metres on import.
+  // when that default is implausible), or a name of UnitNames() (units_axes.h).
+  // Everything is converted to metres on import.
   std::string unit = "auto";
   // Up axis of the source: "auto" (format default: Y for BVH/glTF, the file's own for FBX),
   // "y" or "z". Z-up sources are rotated to glTF's Y-up on import.
@@ -27,17 +27,6 @@ struct ImportOptions {
   std::string animation;
   // Promote recoverable warnings (e.g. a BVH frame-count mismatch) to errors.
   bool strict = false;
-  // Threads that may work on this one file: 0 = the reader decides (a large BVH motion
-  // section is parsed on two), 1 = the calling thread only (for callers that already
-  // spread many files over the cores). The result is the same either way.
-  int threads = 0;
-  // For a process that ends soon after this import (one file converted from the command
-  // line): a mapped input (file_text.h) is left mapped for the process's exit to tear down,
-  // which it does without the cross-CPU TLB flush an munmap pays once a second thread has
-  // run (0.15-0.2 ms of a 5 ms CMU clip conversion here), and so inputs are mapped from
-  // 16 KiB rather than 1 MiB (file_io.h). Many imports in one process should leave it
-  // false, or their mappings pile up.
-  bool leave_input_to_exit = false;
 };
 
 // glTF output for a scene without a skinned mesh of its own (a BVH, or bare animated nodes).
@@ -81,18 +70,42 @@ Result<Scene> ImportFile(const std::string& path, const ImportOptions& options =
 Status ExportFile(const Scene& scene, const std::string& path, const ExportOptions& options = {},
                   AtomicWriter* writer = nullptr);
 
-// ImportFile then ExportFile, in one step: what a converter calls. A BVH becoming a .glb is
-// streamed (formats/bvh_glb): its rows go straight into the .glb's float32 tracks, with no
-// double-precision clip in between, when the import is a plain one (no warning, Y-up); the
-// bytes written are the same either way. `failed_writing` tells an output failure from an
-// input failure.
+// How ConvertFile may use the machine; the bytes written are the same whatever they say.
+struct ConvertOptions {
+  // Threads that may work on this one file: 0 = the converter decides (a large BVH motion
+  // section is parsed on two), 1 = the calling thread only (for callers that already spread
+  // many files over the cores).
+  int threads = 0;
+  // For a process that ends soon after this conversion (one file converted from the command
+  // line): a mapped input is left mapped for the process's exit to tear down, which it does
+  // without the cross-CPU TLB flush an munmap pays once a second thread has run, and so
+  // smaller inputs are mapped. Many conversions in one process leave it false, or their
+  // mappings pile up.
+  bool leave_input_to_exit = false;
+};
+
+// ImportFile then ExportFile, in one step: what a converter calls. Where the build has the
+// convert fast path (formats/fast_convert/, on x86-64 glibc), a BVH becoming a .glb is
+// streamed: its rows go straight into the .glb's float32 tracks, with no double-precision
+// clip in between, when the import is a plain one (no warning, Y-up); the bytes written are
+// the same either way. `failed_writing` tells an output failure from an input failure.
 struct ConvertResult {
   Status status;
   bool failed_writing = false;
   std::vector<std::string> warnings;  // of the import
 };
 ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,
-                          const ExportOptions& export_options, AtomicWriter* writer = nullptr);
+                          const ExportOptions& export_options, const ConvertOptions& convert_options = {},
+                          AtomicWriter* writer = nullptr);
+
+// For a process about to convert files and exit (the command line's convert): prepares the
+// process's memory for that where the fast path can (a heap grown and mapped up front, so
+// that small allocations do not fault in one page at a time); nothing elsewhere.
+void PrepareConversionProcess();
+// For a process about to convert many files one after another: freed buffers stay with the
+// process for the next file instead of going back to the kernel and being faulted in afresh
+// (where the fast path can; nothing elsewhere).
+void PrepareBatchConversion();
 
 // Every importable file under `paths` (files are taken as given, folders recursively),
 // sorted by path and de-duplicated. Errors: a path that does not exist (kIoError), no

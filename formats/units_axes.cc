@@ -18,6 +18,27 @@ constexpr double kTypicalHeightM = 1.7;
 
 }  // namespace
 
+const std::vector<std::string>& UnitNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const auto& unit : kUnits) list.emplace_back(unit.first);
+    return list;
+  }();
+  return names;
+}
+
+std::vector<std::string> UnitChoices() {
+  std::vector<std::string> choices{"auto"};
+  for (const std::string& name : UnitNames()) choices.push_back(name);
+  return choices;
+}
+
+std::string UnitChoicesText() {
+  std::string text;
+  for (const std::string& choice : UnitChoices()) text += (text.empty() ? "" : ", ") + choice;
+  return text;
+}
+
 std::optional<double> UnitScaleByName(const std::string& name) {
   for (const auto& [unit, scale] : kUnits)
     if (name == unit) return scale;

@@ -4,13 +4,22 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
 
 namespace mocapfill {
 
-// Metres per unit for "m", "cm", "mm", "in", "ft", "cmu" (CMU/cgspeed: 0.056444 m), or nullopt.
+// The length units mocapfill reads and writes, by name: "m", "cm", "mm", "in", "ft", "cmu"
+// (CMU/cgspeed: 0.056444 m). Every option that takes a unit offers these, and "auto".
+const std::vector<std::string>& UnitNames();
+// "auto" and UnitNames(): the values of a --unit option.
+std::vector<std::string> UnitChoices();
+// UnitChoices() joined by ", ", for help texts.
+std::string UnitChoicesText();
+
+// Metres per unit for a name of UnitNames(), or nullopt.
 std::optional<double> UnitScaleByName(const std::string& name);
 
 struct UnitChoice {

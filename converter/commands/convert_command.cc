@@ -1,7 +1,5 @@
 // mocapfill convert: any importable file to .gltf, .glb or .bvh; many files at once in
 // one process, spread over all cores.
-#include <malloc.h>
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -25,8 +23,8 @@
 #include "formats/atomic_writer.h"
 #include "formats/file_io.h"
 #include "formats/motion_io.h"
-#include "formats/spread_thread.h"
 #include "processing/retargeting/retarget_scene.h"
+#include "formats/units_axes.h"
 
 namespace mocapfill::cli {
 
@@ -110,11 +108,12 @@ JobResult RetargetOne(const Job& job, const ConvertArgs& args, const ImportOptio
 }
 
 // Converts one file (or retargets it when a target is given).
-JobResult ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import, const InputSet& all_inputs,
-                     const RetargetTarget* target, AtomicWriter* writer) {
+JobResult ConvertOne(const Job& job, const ConvertArgs& args, const ImportOptions& import,
+                     const ConvertOptions& convert, const InputSet& all_inputs, const RetargetTarget* target,
+                     AtomicWriter* writer) {
   if (all_inputs.Contains(job.output)) return {kExitOutput, job.output + ": refusing to overwrite input file", {}};
   if (target) return RetargetOne(job, args, import, *target, writer);
-  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options, writer);
+  const ConvertResult converted = ConvertFile(job.input, job.output, import, args.export_options, convert, writer);
   JobResult result;
   for (const std::string& warning : converted.warnings) result.warnings.push_back(job.input + ": " + warning);
   if (!converted.status.ok()) {
@@ -231,17 +230,15 @@ int RunConvert(ConvertArgs args) {
     workers = std::min<size_t>(jobs.size(), args.jobs > 0 ? args.jobs : hardware);
   }
   // Files spread over the workers already keep the cores busy: each is read on one thread.
-  ImportOptions import = args.import;
-  if (workers > 1) import.threads = 1;
+  const ImportOptions& import = args.import;
+  ConvertOptions convert;
+  if (workers > 1) convert.threads = 1;
   // One file: the process ends right after it, and its exit unmaps the input faster (so
   // smaller inputs are mapped too, formats/file_io.h).
-  import.leave_input_to_exit = one_job && !stdin_file;
+  convert.leave_input_to_exit = one_job && !stdin_file;
   // Many files one after another: freed buffers stay with the process for the next file
   // instead of going back to the kernel and being faulted in afresh.
-  if (!one_job) {
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  }
+  if (!one_job) PrepareBatchConversion();
   std::optional<RetargetTarget> target;
   std::vector<std::string> read_files;
   for (const Job& job : jobs) read_files.push_back(job.input);
@@ -266,18 +263,18 @@ int RunConvert(ConvertArgs args) {
     AtomicWriter writer;
     AtomicWriter* const reuse = one_job ? nullptr : &writer;
     for (size_t i = next++; i < jobs.size(); i = next++) {
-      results[i] = ConvertOne(jobs[i], args, import, inputs, target ? &*target : nullptr, reuse);
+      results[i] = ConvertOne(jobs[i], args, import, convert, inputs, target ? &*target : nullptr, reuse);
       for (const std::string& warning : results[i].warnings) PrintWarning(AsGiven(warning, stdin_path));
       if (results[i].code != kExitOk) PrintError(AsGiven(results[i].error, stdin_path));
       progress.Advance();
     }
   };
-  // This thread is one of the workers; the others start on other CPUs (spread_thread.h).
+  // This thread is one of the workers.
   {
-    std::vector<std::unique_ptr<SpreadThread>> helpers;
+    std::vector<std::jthread> helpers;
     for (size_t t = 1; t < workers; ++t) {
       try {
-        helpers.push_back(std::make_unique<SpreadThread>(work));
+        helpers.emplace_back(work);
       } catch (const std::system_error&) {
         break;  // fewer threads than asked for: the ones there are take all the files
       }
@@ -316,8 +313,8 @@ void AddConvertCommand(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   command->add_option("-j,--jobs", args->jobs, "Parallel conversions (default: all cores)")->check(CLI::NonNegativeNumber);
   command->add_option("--out-unit", args->export_options.unit,
-                      "BVH output unit: auto (the source's unit), m, cm, mm, in, ft, cmu")
-      ->check(CLI::IsMember({"auto", "m", "cm", "mm", "in", "ft", "cmu"}))
+                      "BVH output unit: " + UnitChoicesText() + " (auto: the source's unit)")
+      ->check(CLI::IsMember(UnitChoices()))
       ->capture_default_str();
   command->add_option("--retarget", args->retarget,
                       "Put the motion onto this character's rig (.bvh .gltf .glb .fbx); the output is the character "

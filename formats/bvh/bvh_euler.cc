@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "formats/cpu_avx2.h"
+#include "formats/fast_convert/cpu_avx2.h"
 
 namespace mocapfill::bvh {
 
@@ -122,10 +122,12 @@ __attribute__((always_inline)) inline void SinCosDegreesLoop(const double* __res
     if (!(std::abs(deg[i]) < 1e9)) SinCosDegreesInline(deg[i], sine[i], cosine[i]);
 }
 
+#if MOCAPFILL_AVX2_VARIANTS
 __attribute__((target("avx2"))) void SinCosDegreesAvx2(const double* __restrict deg, size_t n,
                                                        double* __restrict sine, double* __restrict cosine) {
   SinCosDegreesLoop(deg, n, sine, cosine);
 }
+#endif
 
 void SinCosDegreesPlain(const double* __restrict deg, size_t n, double* __restrict sine,
                         double* __restrict cosine) {
@@ -135,7 +137,9 @@ void SinCosDegreesPlain(const double* __restrict deg, size_t n, double* __restri
 }  // namespace
 
 void SinCosDegreesBatch(const double* __restrict deg, size_t n, double* __restrict sine, double* __restrict cosine) {
+#if MOCAPFILL_AVX2_VARIANTS
   if (CpuHasAvx2()) return SinCosDegreesAvx2(deg, n, sine, cosine);
+#endif
   SinCosDegreesPlain(deg, n, sine, cosine);
 }
 

@@ -9,10 +9,8 @@
 #include <vector>
 
 #include "formats/bvh/bvh_euler.h"
-#include "formats/bvh/bvh_motion_parallel.h"
 #include "formats/bvh/bvh_motion_rows.h"
 #include "formats/bvh/bvh_number.h"
-#include "formats/file_io.h"
 #include "processing/core/rotation.h"
 
 namespace mocapfill::bvh {
@@ -150,7 +148,7 @@ Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer) {
 }
 
 Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const MotionHeader& header,
-                       MotionClip& clip, int threads) {
+                       MotionClip& clip, MotionRowsParser parse_rows) {
   const int channels = hierarchy.num_channels;
   const std::vector<rows::JointSampler> samplers = rows::MakeSamplers(hierarchy);
   const std::vector<rows::ChannelGroup> groups = rows::MakeChannelGroups(hierarchy);
@@ -165,9 +163,8 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
                                            std::to_string(header.declared_frames) + " frames of " + std::to_string(joints) +
                                            " joints, more than the " + std::to_string(kMaxJointFrames) +
                                            " joint-frames mocapfill reads");
-  if (threads != 1 && lexer.remaining_bytes() >= kParallelMotionMinBytes) {
-    if (ParseMotionRowsInParallel(lexer.TextFromHere(), samplers, groups, channels, header.declared_frames, clip))
-      return OkStatus();
+  if (parse_rows != nullptr) {
+    if (parse_rows(lexer.TextFromHere(), samplers, groups, channels, header.declared_frames, clip)) return OkStatus();
     clip.rotations.clear();
     clip.translations.clear();
   }
@@ -178,8 +175,6 @@ Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const 
   const size_t reserve_rows = LinesUpTo(lexer.cursor(), lexer.text_end(), cap);
   clip.rotations.reserve(reserve_rows * joints);
   clip.translations.reserve(reserve_rows * joints);
-  PrefaultForWrite(clip.rotations.data(), clip.rotations.capacity() * sizeof(Eigen::Quaterniond));
-  PrefaultForWrite(clip.translations.data(), clip.translations.capacity() * sizeof(Eigen::Vector3d));
 
   std::vector<double> row(channels);
   rows::FrameComposer composer(samplers, groups);

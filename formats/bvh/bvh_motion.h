@@ -7,6 +7,7 @@
 
 #include "formats/bvh/bvh_hierarchy.h"
 #include "formats/bvh/bvh_lexer.h"
+#include "formats/bvh/bvh_reader.h"
 #include "processing/core/motion_clip.h"
 #include "processing/core/status.h"
 
@@ -25,9 +26,8 @@ Result<MotionHeader> ParseMotionHeader(BvhLexer& lexer);
 // Parses every frame row up to the end of the text into `clip` (rotations, already
 // hemisphere-continuous, and translations in file units; num_frames and num_joints set). A row that ends early, holds
 // too many values, or a value that is not a finite number is an error with line:col.
-// `threads` as ImportOptions::threads: other than 1, large motion sections are parsed on
-// two threads (bvh_motion_parallel.h), with the same result.
+// `parse_rows`, when given, is tried first (bvh_reader.h: MotionRowsParser).
 Status ParseMotionRows(BvhLexer& lexer, const ParsedHierarchy& hierarchy, const MotionHeader& header,
-                       MotionClip& clip, int threads = 0);
+                       MotionClip& clip, MotionRowsParser parse_rows = nullptr);
 
 }  // namespace mocapfill::bvh

@@ -147,7 +147,8 @@ void AdoptConstantPositions(Scene& scene) {
 
 }  // namespace
 
-Result<Scene> ReadBvh(std::string_view text, const std::string& path, const ImportOptions& options) {
+Result<Scene> ReadBvh(std::string_view text, const std::string& path, const ImportOptions& options,
+                      MotionRowsParser parse_rows) {
   RETURN_IF_ERROR(bvh::CheckImportOptions(options));
   bvh::BvhLexer lexer(bvh::WithoutByteOrderMark(text), path);
   ASSIGN_OR_RETURN(bvh::ParsedHierarchy hierarchy, bvh::ParseHierarchy(lexer));
@@ -160,7 +161,7 @@ Result<Scene> ReadBvh(std::string_view text, const std::string& path, const Impo
   MotionClip clip;
   clip.name = bvh::ClipName(path);
   clip.sample_rate_hz = bvh::SnapFrameRate(header.frame_time_s);
-  RETURN_IF_ERROR(bvh::ParseMotionRows(lexer, hierarchy, header, clip, options.threads));
+  RETURN_IF_ERROR(bvh::ParseMotionRows(lexer, hierarchy, header, clip, parse_rows));
   RETURN_IF_ERROR(bvh::CheckFrameCount(header, clip.num_frames, path, options.strict, scene.warnings));
   ASSIGN_OR_RETURN(scene.skeleton, bvh::BuildSkeleton(hierarchy, path));
   scene.clips.push_back(std::move(clip));

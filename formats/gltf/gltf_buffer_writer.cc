@@ -1,6 +1,5 @@
 #include "formats/gltf/tinygltf_private.h"
 
-#include "formats/file_io.h"
 #include "formats/gltf/gltf_export_internal.h"
 
 namespace mocapfill::gltf_internal {
@@ -20,7 +19,6 @@ int BufferWriter::AddView(const void* data, size_t size, int target) {
 
 void BufferWriter::Reserve(size_t bytes) {
   bytes_.reserve(bytes_.size() + bytes + 3);
-  PrefaultForWrite(bytes_.data() + bytes_.size(), bytes_.capacity() - bytes_.size());
 }
 
 float* BufferWriter::AddFloatView(size_t count, int& view) {

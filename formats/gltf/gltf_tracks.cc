@@ -1,8 +1,10 @@
 #include "formats/gltf/gltf_tracks.h"
 
-#include <immintrin.h>
+#include "formats/fast_convert/cpu_avx2.h"
 
-#include "formats/cpu_avx2.h"
+#if MOCAPFILL_AVX2_VARIANTS
+#include <immintrin.h>
+#endif
 
 namespace mocapfill {
 
@@ -27,6 +29,7 @@ Status PackExplicitFrameTimes(const std::string& clip_name, const double* times_
   return OkStatus();
 }
 
+#if MOCAPFILL_AVX2_VARIANTS
 namespace {
 
 // (a0 + a2) + (a1 + a3) in every lane.
@@ -69,15 +72,20 @@ __attribute__((target("avx2"))) void PackListedAvx2(const Eigen::Quaterniond* q,
 }
 
 }  // namespace
+#endif
 
 void PackRotations(const Eigen::Quaterniond* q, size_t count, Eigen::Vector4d* previous, float* out, size_t stride) {
+#if MOCAPFILL_AVX2_VARIANTS
   if (CpuHasAvx2()) return PackAllAvx2(q, count, previous, out, stride);
+#endif
   for (size_t j = 0; j < count; ++j) PackRotation(q[j], previous[j], out + j * stride);
 }
 
 void PackListedRotations(const Eigen::Quaterniond* q, const uint32_t* joints, size_t count, Eigen::Vector4d* previous,
                          float* out, size_t stride) {
+#if MOCAPFILL_AVX2_VARIANTS
   if (CpuHasAvx2()) return PackListedAvx2(q, joints, count, previous, out, stride);
+#endif
   for (size_t i = 0; i < count; ++i) PackRotation(q[joints[i]], previous[joints[i]], out + joints[i] * stride);
 }
 

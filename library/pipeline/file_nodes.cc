@@ -6,6 +6,7 @@
 #include "formats/pca/pca_file.h"
 #include "processing/graph/nodes/node_support.h"
 #include "processing/graph/processing_nodes.h"
+#include "formats/units_axes.h"
 
 namespace mocapfill {
 
@@ -45,7 +46,7 @@ OptionSpec PathOption(std::string name, std::string doc, bool (*extension_ok)(co
 bool IsPcaExtension(const std::string& path) { return LowerExtension(path) == ".pca"; }
 
 OptionSpec UnitOption() {
-  return StringOption("unit", "auto", {"auto", "m", "cm", "mm", "in", "ft", "cmu"}, "length unit of the source");
+  return StringOption("unit", "auto", UnitChoices(), "length unit of the source");
 }
 OptionSpec UpOption() { return StringOption("up", "auto", {"auto", "y", "z"}, "up axis of the source"); }
 
@@ -188,7 +189,7 @@ NodeTypeSpec ExportSpec() {
   spec.inputs = {{"motion", PortType::kMotion, false, "motion to write"}};
   spec.options = {
       PathOption("path", "output file; written atomically", IsExportExtension, "a .glb, .gltf or .bvh file"),
-      StringOption("unit", "auto", {"auto", "m", "cm", "mm", "in", "ft", "cmu"}, "BVH output unit (auto = the source's)"),
+      StringOption("unit", "auto", UnitChoices(), "BVH output unit (auto = the source's)"),
       graph::BoolOption("pretty", true, "pretty-print the JSON of .gltf output"),
       StringOption("skeleton", "skin", {"nodes", "skin", "mesh"},
                    "glTF of a motion without a skinned mesh: bare nodes, a skin over the joints, or a skin and a "

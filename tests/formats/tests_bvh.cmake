@@ -12,15 +12,8 @@ mocapfill_add_test(bvh_tests
           ${CMAKE_CURRENT_LIST_DIR}/bvh_bad_input_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_writer_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_corpus_test.cc
-          ${CMAKE_CURRENT_LIST_DIR}/bvh_parallel_test.cc
   LIBS mocapfill_test_bvh mocapfill_bvh)
-# The streaming BVH-to-.glb converter against the clip path, and the direct JSON writer.
-mocapfill_add_test(bvh_glb_tests
-  CORPUS [=[^BvhGlbStream\.EveryCorpusClipGivesTheClipPathsBytes$]=]
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_glb_test.cc
-  LIBS mocapfill_test_bvh mocapfill_formats mocapfill_bvh_glb mocapfill_gltf)
-# Whole-file reads, LargeBuffer and SpreadThread.
+# Whole-file reads and atomic writes.
 mocapfill_add_test(file_io_tests
-  PERF [=[^(LargeBuffer\.(IsMappedForWritingWhenMade|ShortTailStaysInSmallPagesAlreadyFaultedIn|SmallPageTailIsFaultedInUpFront)|ReserveMappedHeap\.SmallAllocationsFindTheirPagesMapped)$]=]
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc ${CMAKE_CURRENT_LIST_DIR}/spread_thread_test.cc
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/file_io_test.cc
   LIBS mocapfill_format_common)

@@ -18,7 +18,6 @@ namespace {
 const Skeleton* FixtureRig() {
   static const Result<Scene> scene = [] {
     ImportOptions options;
-    options.threads = 1;
     const std::string path = std::string(MOCAPFILL_FIXTURES_DIR) + "/bvh/cmu_01_01_short.bvh";
     Result<std::string> text = ReadFileBytes(path);
     if (!text.ok()) return Result<Scene>(text.status());

@@ -83,11 +83,9 @@ const std::string& EncodedFixtureScene() {
 
 int FuzzBvh(const uint8_t* data, size_t size) {
   ImportOptions options;
-  options.threads = 1;
   (void)ReadBvh(AsText(data, size), "fuzz.bvh", options);
-  // Strict mode and the parallel motion parser take other paths through the same text.
+  // Strict mode takes other paths through the same text.
   options.strict = true;
-  options.threads = 2;
   (void)ReadBvh(AsText(data, size), "fuzz.bvh", options);
   return 0;
 }

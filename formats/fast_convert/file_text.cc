@@ -1,4 +1,4 @@
-#include "formats/file_text.h"
+#include "formats/fast_convert/file_text.h"
 
 #include <signal.h>
 #include <sys/mman.h>
@@ -7,6 +7,8 @@
 #include <atomic>
 #include <cstdint>
 #include <utility>
+
+#include "formats/file_reading.h"
 
 namespace mocapfill {
 
@@ -142,5 +144,17 @@ std::string_view FileText::view() const {
 }
 
 bool FileText::intact() const { return slot_ < 0 || !g_slots[slot_].lost.load(std::memory_order_acquire); }
+
+Result<LargeBuffer> ReadFileToBuffer(const std::string& path) { return file_reading::ReadWhole<LargeBuffer>(path); }
+
+Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes) {
+  FileDescriptor fd(-1);
+  ASSIGN_OR_RETURN(const struct stat info, file_reading::OpenForReading(path, fd));
+  if (S_ISREG(info.st_mode) && info.st_size > 0 && static_cast<size_t>(info.st_size) >= map_min_bytes)
+    if (std::optional<FileText> text = FileText::Map(fd.get(), static_cast<size_t>(info.st_size)))
+      return std::move(*text);
+  ASSIGN_OR_RETURN(LargeBuffer bytes, file_reading::ReadOpened<LargeBuffer>(fd, info, path));
+  return FileText(std::move(bytes));
+}
 
 }  // namespace mocapfill

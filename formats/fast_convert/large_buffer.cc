@@ -1,4 +1,4 @@
-#include "formats/large_buffer.h"
+#include "formats/fast_convert/large_buffer.h"
 
 #include <malloc.h>
 #include <sys/mman.h>

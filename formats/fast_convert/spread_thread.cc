@@ -1,4 +1,4 @@
-#include "formats/spread_thread.h"
+#include "formats/fast_convert/spread_thread.h"
 
 #include <pthread.h>
 #include <sched.h>

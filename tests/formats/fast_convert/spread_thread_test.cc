@@ -8,7 +8,7 @@
 #include <atomic>
 #include <thread>
 
-#include "formats/spread_thread.h"
+#include "formats/fast_convert/spread_thread.h"
 
 namespace mocapfill {
 namespace {

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "formats/large_buffer.h"
+#include "formats/fast_convert/large_buffer.h"
 #include "formats/motion_io.h"
 
-namespace mocapfill::bvh_glb {
+namespace mocapfill::fast_convert {
 
 struct StreamedGlb {
   std::string head;    // glb header, JSON chunk, binary chunk header
@@ -26,7 +26,8 @@ struct StreamedGlb {
 // is a plain one: valid text whose import gives no warning, a Y-up source, and a clip
 // whose frame times fit float32. nullopt otherwise; ImportFile and ExportFile then give the
 // same file, or the error or warning, through the clip.
+// `threads` as ConvertOptions::threads.
 std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path, const ImportOptions& options,
-                                          const ExportOptions& export_options = {});
+                                          const ExportOptions& export_options = {}, int threads = 0);
 
-}  // namespace mocapfill::bvh_glb
+}  // namespace mocapfill::fast_convert

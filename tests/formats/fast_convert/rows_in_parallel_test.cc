@@ -1,4 +1,4 @@
-// The two-thread MOTION parser (bvh_motion_parallel.h) against the serial loop: large
+// The two-thread MOTION parser (formats/fast_convert/rows_in_parallel.h) against the serial loop: large
 // texts made by repeating the rows of real captures must give bit-identical clips, and
 // every irregular case (bad value, wrong frame count, CRLF line ends) must end in exactly
 // the serial loop's error or warnings.
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "formats/bvh/bvh_motion_parallel.h"
+#include "formats/fast_convert/rows_in_parallel.h"
 #include "formats/bvh/bvh_reader.h"
 #include "tests/formats/bvh_test_support.h"
 #include "tests/support/test_paths.h"
@@ -17,7 +17,7 @@ namespace {
 
 using testing::FixturePath;
 using testing::ReadText;
-using bvh::kParallelMotionMinBytes;
+using fast_convert::kParallelRowsMinBytes;
 
 // The fixture's text with its motion rows repeated until the motion section is at least
 // `min_bytes`, and the Frames line rewritten to the new row count plus `frames_delta`.
@@ -42,9 +42,7 @@ std::string Enlarge(const std::string& text, size_t min_bytes, int frames_delta 
 }
 
 Result<Scene> Read(const std::string& text, int threads) {
-  ImportOptions options;
-  options.threads = threads;
-  return ReadBvh(text, "big.bvh", options);
+  return ReadBvh(text, "big.bvh", {}, threads == 1 ? nullptr : &fast_convert::ParseRowsIntoClip);
 }
 
 void ExpectBitIdentical(const Scene& a, const Scene& b) {
@@ -63,7 +61,7 @@ class BvhParallel : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(BvhParallel, LargeMotionIsBitIdenticalToTheSerialParse) {
   const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + GetParam())),
-                                   4 * kParallelMotionMinBytes);
+                                   4 * kParallelRowsMinBytes);
   const Result<Scene> serial = Read(text, 1);
   const Result<Scene> parallel = Read(text, 0);
   ASSERT_TRUE(serial.ok()) << serial.status().message();
@@ -75,7 +73,7 @@ TEST_P(BvhParallel, LargeMotionIsBitIdenticalToTheSerialParse) {
 TEST_P(BvhParallel, FrameCountMismatchGivesTheSerialWarnings) {
   for (int delta : {-7, +7}) {
     const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + GetParam())),
-                                     4 * kParallelMotionMinBytes, delta);
+                                     4 * kParallelRowsMinBytes, delta);
     const Result<Scene> serial = Read(text, 1);
     const Result<Scene> parallel = Read(text, 0);
     ASSERT_EQ(serial.ok(), parallel.ok()) << "delta " << delta;
@@ -95,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, BvhParallel,
 // A bad value late in the second half: the parallel attempt gives up and the error names
 // the same line and column as the serial parse.
 TEST(BvhParallelErrors, BadValueInTheSecondHalfReportsTheSameLine) {
-  std::string text = Enlarge(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), 4 * kParallelMotionMinBytes);
+  std::string text = Enlarge(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), 4 * kParallelRowsMinBytes);
   const size_t at = text.rfind('\n', text.size() - 2000);
   text.insert(at + 1, "nan ");
   const Result<Scene> serial = Read(text, 1);

@@ -14,7 +14,7 @@
 #include "formats/bvh/bvh_motion_rows.h"
 #include "formats/gltf/gltf_tracks.h"
 
-namespace mocapfill::bvh_glb {
+namespace mocapfill::fast_convert {
 
 // Where the rows go. `layout.moving` counts every joint with position channels while the rows
 // are parsed: slot k of the translation tracks holds joint position_joints[k].
@@ -48,4 +48,4 @@ struct PositionRange {
 // are not exactly layout.frames complete, valid rows, the tracks then being unspecified.
 bool PackRows(std::string_view rows_text, const TrackTarget& target, int threads, std::vector<PositionRange>& ranges);
 
-}  // namespace mocapfill::bvh_glb
+}  // namespace mocapfill::fast_convert

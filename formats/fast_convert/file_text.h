@@ -11,10 +11,12 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 
-#include "formats/large_buffer.h"
+#include "formats/fast_convert/large_buffer.h"
+#include "processing/core/status.h"
 
 namespace mocapfill {
 
@@ -50,5 +52,21 @@ class FileText {
   size_t mapping_bytes_ = 0;
   int slot_ = -1;
 };
+
+// Regular files of at least this size are mapped by ReadFileText.
+inline constexpr size_t kMapFileMinBytes = size_t{1} << 20;
+// The same for an input the process leaves mapped until it exits (ConvertOptions::
+// leave_input_to_exit): no munmap follows, and mapping costs one call where a read costs a
+// page fault per 4 KiB of the fresh buffer it fills. Many inputs in one process stay at
+// kMapFileMinBytes: there every munmap flushes the other workers' TLBs.
+inline constexpr size_t kMapLeftInputMinBytes = size_t{16} << 10;
+
+// The whole file into a LargeBuffer. Fails as ReadFileBytes (file_io.h).
+Result<LargeBuffer> ReadFileToBuffer(const std::string& path);
+
+// The file's bytes for parsing: a regular file of at least `map_min_bytes` mapped
+// read-only (check intact() after use), anything else, or a file that cannot be mapped,
+// read as ReadFileToBuffer reads it. Fails with kIoError naming the path.
+Result<FileText> ReadFileText(const std::string& path, size_t map_min_bytes = kMapFileMinBytes);
 
 }  // namespace mocapfill

@@ -1,4 +1,4 @@
-// The streaming BVH-to-.glb converter (formats/bvh_glb) against the clip path (ReadBvh then
+// The streaming BVH-to-.glb converter (formats/fast_convert/bvh_to_glb.h) against the clip path (ReadBvh then
 // WriteGlb): the same bytes for every shipped fixture and every corpus clip, on one thread
 // and on two (including hemisphere flips at the split), and the clip path's behaviour
 // wherever the import is not a plain one. Also the direct JSON writer against tinygltf's.
@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "formats/bvh/bvh_motion_parallel.h"
+#include "formats/fast_convert/rows_in_parallel.h"
 #include "formats/bvh/bvh_reader.h"
-#include "formats/bvh_glb/bvh_to_glb.h"
+#include "formats/fast_convert/bvh_to_glb.h"
+#include "formats/fast_convert/file_text.h"
 #include "formats/file_io.h"
 #include "formats/gltf/gltf_export_internal.h"
 #include "formats/gltf/gltf_writer.h"
@@ -28,8 +29,7 @@ using testing::ReadText;
 
 std::optional<std::string> Streamed(const std::string& text, const std::string& path, int threads,
                                     ImportOptions options = {}, const ExportOptions& export_options = {}) {
-  options.threads = threads;
-  std::optional<bvh_glb::StreamedGlb> glb = bvh_glb::StreamBvhToGlb(text, path, options, export_options);
+  std::optional<fast_convert::StreamedGlb> glb = fast_convert::StreamBvhToGlb(text, path, options, export_options, threads);
   if (!glb) return std::nullopt;
   return glb->head + std::string(glb->tracks.view()) +
          std::string(reinterpret_cast<const char*>(glb->tail.data()), glb->tail.size());
@@ -37,7 +37,6 @@ std::optional<std::string> Streamed(const std::string& text, const std::string& 
 
 Result<std::string> ThroughTheClip(const std::string& text, const std::string& path, ImportOptions options = {},
                                    const ExportOptions& export_options = {}) {
-  options.threads = 1;
   ASSIGN_OR_RETURN(const Scene scene, ReadBvh(text, path, options));
   ASSIGN_OR_RETURN(const GlbFile glb, WriteGlb(scene, export_options));
   return glb.head + std::string(reinterpret_cast<const char*>(glb.bin.data()), glb.bin.size());
@@ -105,7 +104,7 @@ TEST(BvhGlbStream, SkinChoicesGiveTheClipPathsBytes) {
 TEST(BvhGlbStream, TwoThreadsGiveTheSerialBytes) {
   for (const char* name : {"cmu_01_01_short.bvh", "bandai_walk_normal_001_short.bvh", "cmu_mixed_orders.bvh",
                            "cmu_two_roots.bvh", "cmu_crlf.bvh"}) {
-    const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + name)), 4 * bvh::kParallelMotionMinBytes);
+    const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + name)), 4 * fast_convert::kParallelRowsMinBytes);
     const Result<std::string> expected = ThroughTheClip(text, "big.bvh");
     ASSERT_TRUE(expected.ok()) << name;
     const std::optional<std::string> serial = Streamed(text, "big.bvh", 1);
@@ -124,7 +123,7 @@ TEST(BvhGlbStream, HemisphereFlipsAtTheSplitAreJoinedExactly) {
   for (int extra_rows : {0, 1, 2, 3}) {
     std::string rows;
     int frames = 0;
-    for (; rows.size() < 4 * bvh::kParallelMotionMinBytes + static_cast<size_t>(extra_rows) * 40; ++frames)
+    for (; rows.size() < 4 * fast_convert::kParallelRowsMinBytes + static_cast<size_t>(extra_rows) * 40; ++frames)
       rows += "1.5 90.25 -3.0 " + std::string(frames % 2 ? "170.0" : "-170.0") + " 10.0 " +
               std::to_string(frames % 7) + " 179.5 -179.5 0.0\n";
     const std::string text = "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition "
@@ -139,7 +138,7 @@ TEST(BvhGlbStream, HemisphereFlipsAtTheSplitAreJoinedExactly) {
   }
 }
 
-// ConvertFile maps inputs of kMapFileMinBytes and more (formats/file_text.h). A text that
+// ConvertFile maps inputs of kMapFileMinBytes and more (formats/fast_convert/file_text.h). A text that
 // ends exactly at a page boundary has no byte after it that a parser could read: the mapped
 // conversion (whole pages, nothing beyond) must write what the clip path writes.
 TEST(BvhGlbStream, MappedInputEndingOnAPageBoundaryConvertsAsTheClipPath) {
@@ -167,11 +166,11 @@ TEST(BvhGlbStream, MappedInputEndingOnAPageBoundaryConvertsAsTheClipPath) {
 }
 
 // A single conversion leaves its input to the process's exit and so maps inputs from
-// kMapLeftInputMinBytes (formats/file_io.h): every shipped BVH converts to the same bytes
+// kMapLeftInputMinBytes (formats/fast_convert/file_text.h): every shipped BVH converts to the same bytes
 // that way as read into memory, and as through the clip, one ending on a page boundary too.
 TEST(BvhGlbStream, InputsLeftToExitAreMappedAndConvertAsTheClipPath) {
   const std::string dir = testing::TestOutputDir("bvh_glb_left_to_exit");
-  ImportOptions left;
+  ConvertOptions left;
   left.leave_input_to_exit = true;
   std::vector<std::string> inputs;
   for (const auto& entry : fs::directory_iterator(FixturePath("bvh"))) inputs.push_back(entry.path().string());
@@ -189,7 +188,7 @@ TEST(BvhGlbStream, InputsLeftToExitAreMappedAndConvertAsTheClipPath) {
     mapped += text->mapped();
     large_enough += fs::file_size(input) >= kMapLeftInputMinBytes;
     const ConvertResult read = ConvertFile(input, dir + "/" + name + "_read.glb", {}, {});
-    const ConvertResult left_mapped = ConvertFile(input, dir + "/" + name + "_left.glb", left, {});
+    const ConvertResult left_mapped = ConvertFile(input, dir + "/" + name + "_left.glb", {}, {}, left);
     ASSERT_TRUE(read.status.ok() && left_mapped.status.ok()) << input;
     EXPECT_EQ(left_mapped.warnings, read.warnings) << input;
     const std::string left_bytes = ReadText(dir + "/" + name + "_left.glb");

@@ -1,4 +1,4 @@
-#include "formats/bvh_glb/bvh_to_glb.h"
+#include "formats/fast_convert/bvh_to_glb.h"
 
 #include <algorithm>
 #include <cstring>
@@ -10,10 +10,11 @@
 #include "formats/bvh/bvh_lexer.h"
 #include "formats/bvh/bvh_motion.h"
 #include "formats/bvh/bvh_scene.h"
-#include "formats/bvh_glb/bvh_track_rows.h"
+#include "formats/fast_convert/bvh_track_rows.h"
+#include "formats/fast_convert/large_buffer.h"
 #include "formats/gltf/gltf_writer.h"
 
-namespace mocapfill::bvh_glb {
+namespace mocapfill::fast_convert {
 
 namespace {
 
@@ -47,7 +48,8 @@ int PositionGroup(const bvh::ParsedJoint& joint, const std::vector<bvh::rows::Ch
 }  // namespace
 
 std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::string& path,
-                                          const ImportOptions& options, const ExportOptions& export_options) {
+                                          const ImportOptions& options, const ExportOptions& export_options,
+                                          int threads) {
   if (!bvh::CheckImportOptions(options).ok() || options.up == "z") return std::nullopt;
   bvh::BvhLexer lexer(bvh::WithoutByteOrderMark(text), path);
   Result<bvh::ParsedHierarchy> hierarchy = bvh::ParseHierarchy(lexer);
@@ -89,7 +91,7 @@ std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::stri
   }
   target.tracks = reinterpret_cast<float*>(glb.tracks.data());
   std::vector<PositionRange> ranges;
-  if (!PackRows(lexer.TextFromHere(), target, options.threads, ranges)) return std::nullopt;
+  if (!PackRows(lexer.TextFromHere(), target, threads, ranges)) return std::nullopt;
 
   Scene scene;
   scene.skeleton = std::move(*skeleton);
@@ -123,4 +125,4 @@ std::optional<StreamedGlb> StreamBvhToGlb(std::string_view text, const std::stri
   return glb;
 }
 
-}  // namespace mocapfill::bvh_glb
+}  // namespace mocapfill::fast_convert

@@ -1,0 +1,66 @@
+// The MOTION rows of a large BVH file parsed on two threads, into a clip (ReadBvh's rows,
+// through its MotionRowsParser hook) or into a .glb's float tracks (bvh_track_rows.h): one
+// splitter and one hemisphere join for both. The text is cut into pieces at line starts,
+// every piece's rows are counted so that each knows its first frame, and the pieces are
+// parsed in turn by whichever thread is free. Each piece starts its quaternion hemisphere
+// chains afresh; the join then negates whole pieces where the serial parse would have
+// flipped, so the result is bit-identical to the serial loop's. Anything irregular makes
+// the parser give up and the serial loop read the text again, reporting the exact error.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+#include "formats/bvh/bvh_motion_rows.h"
+#include "processing/core/motion_clip.h"
+
+namespace mocapfill::fast_convert {
+
+// Motion text smaller than this is parsed on the calling thread: starting a thread costs
+// more than it saves.
+inline constexpr size_t kParallelRowsMinBytes = size_t{384} << 10;
+
+// Rows of [p, end): lines holding something other than blanks. Rows that end in a lone CR
+// are undercounted; the parse then disagrees with the count and the serial loop takes over.
+int64_t CountRows(const char* p, const char* end);
+
+// A run of whole lines of the motion section, parsed as one piece.
+struct RowPiece {
+  const char* begin = nullptr;
+  const char* end = nullptr;
+  int64_t first_frame = 0;  // rows of the pieces before
+  int64_t rows = 0;         // rows counted in [begin, end)
+};
+
+// `rows_text` cut at line starts into pieces (at least two) of about 64 KiB: the two
+// vCPUs of a shared machine run at different speeds from moment to moment, so small pieces
+// taken in turn keep both busy to the end. Rows are not counted yet.
+std::vector<RowPiece> SplitIntoPieces(std::string_view rows_text);
+
+// Counts every piece's rows and sets its first frame, then calls parse(i) for every piece
+// i, on this thread and on a helper thread started on another CPU (spread_thread.h), each
+// taking the next piece in turn; on this thread alone when no thread can be had.
+void CountAndParseOnTwoThreads(std::vector<RowPiece>& pieces, const std::function<void(size_t)>& parse);
+
+// The hemisphere join of one joint at a piece boundary. The serial parse would have turned
+// the piece's first rotation `first` towards the rotation before it, `before_last` (sign 1),
+// and a packed track would have turned its normalised value towards the last packed value
+// `before_packed` (sign 2; nullptr for a clip, which is not packed). Every later frame of the
+// piece follows its first, so the piece differs from the serial result by sign1 * sign2:
+// true when the joint's rotations over the whole piece must be negated (negation is exact,
+// so every later decision only changes sign).
+bool PieceMustBeNegated(const Eigen::Quaterniond& first, const Eigen::Quaterniond& before_last,
+                        const Eigen::Vector4d* before_packed);
+
+// ReadBvh's MotionRowsParser: every row of `rows_text` (the text after the Frame Time line)
+// into `clip` (rotations, translations, num_frames) on two threads. False, with the clip's
+// arrays in an unspecified state, when the text is small or anything is irregular.
+bool ParseRowsIntoClip(std::string_view rows_text, const std::vector<bvh::rows::JointSampler>& samplers,
+                       const std::vector<bvh::rows::ChannelGroup>& groups, int channels, int64_t declared_frames,
+                       MotionClip& clip);
+
+}  // namespace mocapfill::fast_convert
