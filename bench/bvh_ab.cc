@@ -1,9 +1,9 @@
 // Driver of bench/bvh_ab.sh: the BVH-to-.glb streaming code of two revisions, built into
 // this one program under the namespaces bvh_a/bvh_glb_a (the base revision) and
 // bvh_x/bvh_glb_x (the working tree), converts each file with one and then the other,
-// alternating which goes first, and sums each side's thread CPU time. On a VM whose speed
-// drifts from second to second this is the only comparison that resolved a few per cent:
-// both sides see the same stretch of machine within milliseconds of each other.
+// alternating which goes first, and sums each side's thread CPU time. Both sides see the
+// same stretch of machine within milliseconds of each other, so a VM whose speed drifts from
+// second to second still resolves differences of a few per cent (docs/performance.md).
 //   bvh_ab ROUNDS FILE...
 #include <algorithm>
 #include <cstdio>

@@ -5,9 +5,9 @@
 #   BVH_AB_PASSES=N (1): passes of both programs; BVH_AB_FLAGS="...": extra compiler flags for
 #   the working tree's copy (e.g. code alignment), against REV built with the usual ones.
 # Everything else (glTF writer, file I/O, core) is the working tree's, from the build's
-# libraries (ninja -C <build> mocapfill_gltf first). A/A (REV = HEAD, no change): each link
-# order alone 0.84-0.90 one way, 1.09-1.11 the other; their geometric mean 0.978 here, so
-# differences under about 3% are noise.
+# libraries (ninja -C <build> mocapfill_gltf first). Prints working tree / base per link order
+# and their geometric mean; run it A/A (REV = HEAD, no change) to see the noise on this
+# machine (docs/performance.md has the figures).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 rev=${1:-HEAD}
@@ -42,7 +42,7 @@ compile "$root" x
 wait
 # ReadBvh and WriteBvh live in namespace mocapfill, so both copies define them; the driver
 # calls neither, and either copy serves. Where each copy lands in the program moves its
-# speed by up to 10% on its own (A/A gave 0.90 one way round), so the program is linked both
+# speed on its own, by as much as the changes being measured, so the program is linked both
 # ways round and the two ratios' geometric mean is the figure.
 link() {  # output objects...
   local out=$1; shift
