@@ -13,14 +13,13 @@ command -v assimp >/dev/null || { echo "error: assimp CLI missing (apt-get insta
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # The binary is timed as installed (copied, as `cmake --install` and packages do), not as
-# the linker left it: a freshly linked executable cost 0.4-0.7 ms more per process here
-# (one Bandai clip: 4.41 vs 3.73 ms of CPU, the same page-fault count), which is how the
-# kernel holds the linker's output in the page cache, not the program.
+# the linker left it: the kernel's page cache holds a freshly linked file in a way that makes
+# each process slower to start, which is no property of the program (docs/performance.md).
 cp "$exe" "$tmp/mocapfill"
 exe=$tmp/mocapfill
 
-# bash's own clock ($EPOCHREALTIME): forking date(1) for every reading added about a
-# millisecond to each measured command, which weighed on the few-millisecond CMU conversions.
+# bash's own clock ($EPOCHREALTIME): forking date(1) for every reading would add about a
+# millisecond to each measured command, much of a few-millisecond CMU conversion.
 frames_of() { awk '/^Frames:/ {s += $2} END {print s}' "$@"; }
 bytes_of() { cat "$@" | wc -c; }
 
@@ -28,11 +27,11 @@ bandai=("$data"/bandai-namco-1/data/*.bvh)
 mb=$(echo "$(bytes_of "${bandai[@]}") / 1000000" | bc -l)
 frames=$(frames_of "${bandai[@]}")
 
-# This shared machine's vCPUs change speed by up to 2x from one second to the next, so the
-# two tools take turns: Assimp then mocapfill on each file (or clip run). Two figures come
-# out: the best run of each side against the other's best, and the median over the pairs
-# of each pair's own ratio, which a slow stretch shifts for both sides at once. Measured one
-# side after the other, a ratio moved by a third between runs.
+# A shared machine's vCPUs change speed from one second to the next, so the two tools take
+# turns: Assimp then mocapfill on each file (or clip run). Two figures come out: the best run
+# of each side against the other's best, and the median over the pairs of each pair's own
+# ratio, which a slow stretch shifts for both sides at once. Measured one side after the
+# other, a ratio would move with the machine rather than with the programs.
 tick() { t=$EPOCHREALTIME; }
 add() { echo "$1 + $2 - $3" | bc -l; }
 minimum() { printf "%s\n" "$@" | sort -g | head -1; }
@@ -94,9 +93,9 @@ for clip in "$data"/cmu/*.bvh; do
     "$(times "$(median "${c_pairs[@]}")")"
 done
 # The ratios move with the machine: in a slow phase (page faults and process starts several
-# times dearer) Assimp, which takes ~1,100 page faults for a Bandai clip against our ~70,
-# slows down more than mocapfill does. Each side's cost of a process that does nothing
-# useful, measured in turns, says which phase the figures above were taken in.
+# times dearer) Assimp, which takes many more page faults per clip, slows down more than
+# mocapfill does. Each side's cost of a process that does nothing useful, measured in turns,
+# says which phase the figures above were taken in.
 fl_mf=(); fl_as=()
 for ((i = 0; i < 10 * runs; i++)); do
   tick; t0=$t; assimp version >/dev/null 2>&1

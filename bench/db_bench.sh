@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Motion database speed: build an .mfdb from the 174 Bandai-Namco clips and load it, and
-# print times and peak memory against the issue #3 targets (build < 1 s, load < 50 ms,
-# loaded database < 64 MB). Builds nothing: pass the build directory holding converter/mocapfill.
+# print times and peak memory against the targets (build < 1 s, load < 50 ms, loaded
+# database < 64 MB; docs/performance.md). Builds nothing: pass the build directory holding
+# converter/mocapfill.
 #
 #   bench/db_bench.sh build-db [data_dir] [runs]
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fill speed (issues #4 and #5): a 10-second sketch (fixtures/sketches/walk_proud_002_legs8.glb, root and
+# Fill speed: a 10-second sketch (fixtures/sketches/walk_proud_002_legs8.glb, root and
 # legs keyed every 8 frames) against the full 174-clip Bandai-Namco database, database build
 # excluded (built once into an .mfdb first). Prints the per-stage times of each method from the
 # fill report (best of N runs), the whole fill time inside the process, and the ratio to the

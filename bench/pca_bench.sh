@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed of the PCA key fit (issue #5 target: 300 frames, 30 components, Ceres fit < 200 ms),
+# Speed of the PCA key fit (target: 300 frames, 30 components, Ceres fit < 200 ms),
 # stage by stage, against a direct sparse solve of the same problem in the same run.
 #   bench/pca_bench.sh [build-dir] [data-dir] [repeats]
 # Configures the build dir with MOCAPFILL_BUILD_BENCHMARKS=ON and builds only pca_bench.

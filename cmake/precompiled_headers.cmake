@@ -1,6 +1,7 @@
 # Precompiled headers. Most files include Eigen; every test includes GoogleTest and many
-# nlohmann/json; every CLI verb includes CLI11 (about 9 s of parsing per file on its own).
-# Parsing them once per class of targets rather than once per file halves a clean build.
+# nlohmann/json; every CLI verb includes CLI11, which alone takes seconds to parse. Parsing
+# them once per class of targets rather than once per file makes a clean build much shorter
+# (docs/performance.md).
 # Three owner targets hold the headers, and every target of ours reuses its class's one
 # (mocapfill_apply_precompiled_headers, called once all targets exist). Shared libraries and
 # plug-ins hide their symbols, which takes different flags, so they compile without.

@@ -4,13 +4,13 @@
 // This executable runs the format verbs (convert, inspect) itself and hands every other
 // command line, help and --version included, to mocapfill-full (verb_dispatch.h). The
 // reason is start-up time: a converter runs once per file in asset pipelines, and the
-// solver behind the fill verbs (Ceres, with glog, gflags, SuiteSparse and BLAS) cost
-// about 0.8 ms of every process start (static initialisers that look up the user name
-// through NSS, three more shared objects, thousands of relocations) before any work.
-// The verbs that need it run for hundreds of milliseconds and do not notice one exec.
-// Without it, this executable is linked statically (no dynamic loader, no relocations:
-// another 0.6 ms of a 4 ms BVH conversion), so Assimp inputs (FBX...), which need the
-// dynamically loaded Assimp plug-in, go to mocapfill-full as well (front_end_assimp.cc).
+// solver behind the fill verbs (Ceres, with glog, gflags, SuiteSparse and BLAS) costs every
+// process start static initialisers that look up the user name through NSS, more shared
+// objects and thousands of relocations, before any work. The verbs that need it run for
+// hundreds of milliseconds and do not notice one exec. Without it, this executable is
+// linked statically (no dynamic loader, no relocations; docs/performance.md has the
+// figures), so Assimp inputs (FBX...), which need the dynamically loaded Assimp plug-in,
+// go to mocapfill-full as well (front_end_assimp.cc).
 #include <string>
 #include <string_view>
 

@@ -1,11 +1,10 @@
 # Start-up is most of a small conversion. Ceres (static already) pulls in glog, gflags,
 # SuiteSparse, LAPACK/BLAS/ATLAS and through them libstdc++.so, libgfortran and a dozen
-# more shared objects: resolving and relocating them took about 2 ms of the 4.5 ms that
-# `mocapfill --version` cost under load (perf stat -r 100; LD_DEBUG=statistics counted
-# 2894 symbol relocations, 221 after this change). Only the pca verb runs Ceres, yet every
-# process paid for it. A target with MOCAPFILL_STATIC_SOLVER_DEPS set links the static
-# archives instead; the libraries' own consumers (tests) keep the shared ones. When any
-# archive is missing, nothing changes.
+# more shared objects, and resolving and relocating their symbols would be a large share of
+# every start of mocapfill-full (docs/performance.md). Only the verbs that fit PCA models run
+# Ceres, yet every process would pay for it. A target with MOCAPFILL_STATIC_SOLVER_DEPS set
+# links the static archives instead; the libraries' own consumers (tests) keep the shared
+# ones. When any archive is missing, nothing changes.
 #
 #   mocapfill_link_solver_deps_statically(<target>)
 

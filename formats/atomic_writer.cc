@@ -78,8 +78,8 @@ bool IsRegularFile(const std::string& path) {
 
 // Swaps the finished `tmp` with the regular file at `path` (renameat2 RENAME_EXCHANGE):
 // the old file is then at `tmp`. A plain rename over an existing file makes ext4 start
-// writing the new file's data out before it returns (its auto_da_alloc rule), about 1.2 ms
-// for a CMU clip's 1.4 MB .glb; the swap does not. False when there is no regular file
+// writing the new file's data out before it returns (its auto_da_alloc rule), a wait that is a
+// sizeable part of a small conversion; the swap does not. False when there is no regular file
 // at `path` or the swap is unsupported (other file systems, old kernels).
 bool SwapIntoPlace(const std::string& tmp, const std::string& path) {
   return IsRegularFile(path) && ::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, path.c_str(), RENAME_EXCHANGE) == 0;

@@ -13,10 +13,10 @@ namespace mocapfill {
 // `path` names a complete file at every instant and a failed write leaves it as it was.
 // The file a write replaces ends up under the temporary name; a writer keeps it (its
 // "spare") and overwrites it for its next output in the same folder, instead of unlinking
-// it and creating a file anew. On ext4 without a journal (this project's machines), every
-// new file's inode is found by stepping over the inodes freed in the last minutes, one
-// buffer lookup each: re-converting the 174 Bandai clips spent a third of its time there
-// and in the folder lock held meanwhile. A spare is reused only while no other name links
+// it and creating a file anew: on ext4 without a journal, every new file's inode is found
+// by stepping over the inodes freed in the last minutes, one buffer lookup each, with the
+// folder locked meanwhile, which a batch that replaces its outputs would pay for every file
+// (docs/performance.md). A spare is reused only while no other name links
 // to it, no process has it open (or mapped) and this user owns it, and it takes the mode a
 // new file would get. The writer's destructor, and SIGINT, SIGTERM or SIGHUP meanwhile,
 // remove the spare.

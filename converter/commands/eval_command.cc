@@ -1,4 +1,4 @@
-// mocapfill eval: the leave-one-out evaluation harness (issue #4): sketches made from ground
+// mocapfill eval: the leave-one-out evaluation harness: sketches made from ground
 // truth clips, filled by each method against a database without the clip's fold, scored,
 // printed as a table (or JSON).
 #include <cstdio>

@@ -1,5 +1,5 @@
 // mocapfill fill: completes a sketch's missing joints from a motion capture database and writes
-// the sketch's asset with a complete animation, plus an optional JSON report (issue #4).
+// the sketch's asset with a complete animation, plus an optional JSON report.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// mocapfill pca: principal component models of a motion database (issue #5).
+// mocapfill pca: principal component models of a motion database.
 //   pca build  --db <mfdb|files|folders> -o model.pca [--variance] [--max-components] [--labels]
 //   pca info   model.pca [--json]
 //   pca edit   in.glb -o out.glb --model model.pca --component 1=+2.0 ...

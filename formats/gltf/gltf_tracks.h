@@ -40,10 +40,9 @@ Status PackExplicitFrameTimes(const std::string& clip_name, const double* times_
 // such a length moves a value by less than the float32 rounding after it), turned to the
 // hemisphere of `previous` (the joint's packed rotation one frame earlier, zero before the
 // first frame; updated here) and rounded to float32. The rounding leaves the length within
-// about 1e-7 of 1, far inside what glTF readers and the validator accept (0.00769);
-// renormalising the float32 values in double, as this once did, moved them by an ulp at
-// most. Skipping both divisions changed 229 of CMU 01_01's 352,256 floats, by one ulp,
-// and halved the packing's time. The sums run in the order Eigen's SSE2 code adds a
+// about 1e-7 of 1, far inside what glTF readers and the validator accept (0.00769), so
+// the float32 values are not renormalised: that would move them by an ulp at most, at the
+// cost of a division each. The sums run in the order Eigen's SSE2 code adds a
 // Vector4d's terms, (x + z) + (y + w): these are its squaredNorm() and dot() written out,
 // bit for bit, so that PackRotations can do the same four lanes at once.
 inline constexpr double kRotationUnitTolerance = 1e-12;

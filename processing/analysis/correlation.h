@@ -1,4 +1,4 @@
-// Joint-correlation table (algorithms.md 4a.1; thesis figure 4.4, pelvis against hip): for
+// Joint-correlation table (thesis section 4.7 and figure 4.4, pelvis against hip): for
 // every channel pair (a, b) the Pearson correlation of a band-pass signal of a with the same
 // band of b shifted by a lag tau, maximised in |corr| over |tau| <= max lag. The hierarchical
 // fill method ranks driven channels by |corr| and uses the sign and lag when matching.

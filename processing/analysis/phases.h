@@ -1,6 +1,6 @@
-// Motion phases / fragmentation (thesis 4.2-4.3, algorithms.md 3a.2): a band-pass signal of
-// one "master" channel is cut wherever its first derivative changes sign, so each fragment
-// is one rising or falling half-swing (a walk cycle falls into four phases at the stride band).
+// Motion phases / fragmentation (thesis 4.2-4.3): a band-pass signal of one "master"
+// channel is cut wherever its first derivative changes sign, so each fragment is one rising
+// or falling half-swing (a walk cycle falls into four phases at the stride band).
 #pragma once
 
 #include <Eigen/Core>

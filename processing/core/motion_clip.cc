@@ -59,7 +59,7 @@ Status MotionClip::Validate(const Skeleton& skeleton) const {
   for (size_t i = 0; i < n; ++i) {
     // Fast acceptance, branch-light: x - x is 0 exactly when x is finite, and a squared
     // norm within 1 +- 1.9e-6 puts the norm within 1e-6 of 1. Anything else takes the
-    // exact checks below, which decide and word the error as before.
+    // exact checks below, which decide and word the error.
     const Eigen::Vector3d& t = translations[i];
     const double squared_norm = rotations[i].coeffs().squaredNorm();
     if ((t.x() - t.x()) + (t.y() - t.y()) + (t.z() - t.z()) == 0.0 && std::abs(squared_norm - 1.0) <= 1.9e-6) continue;

@@ -1,4 +1,4 @@
-// The principal component model of a motion database (algorithms.md 5a) as plain data.
+// The principal component model of a motion database (thesis chapter 5) as plain data.
 //
 // It lives in core, beside MotionClip, because both the algorithms (processing/pca) and
 // the .pca file format (formats/pca) need it and formats must not depend on processing.
@@ -49,7 +49,8 @@ struct PcaModel {
   Eigen::VectorXd residual_variance;
   // Root-mean-square second difference over database frames (per frame, at sample_rate_hz):
   // of each coefficient c_k (K entries) and of each pose channel (pose_dim entries). These
-  // are the smoothness sigmas s_acc of algorithms.md 6.2.
+  // are the smoothness sigmas s_acc of the Ceres key fit (processing/pca/pca_fit.h): a
+  // database statistic, so the smoothness weight carries over between frame rates.
   Eigen::VectorXd coefficient_accel_rms;
   Eigen::VectorXd channel_accel_rms;
 

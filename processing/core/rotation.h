@@ -51,8 +51,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegPerRad = 180.0 / kPi;
 constexpr double kRadPerDeg = kPi / 180.0;
 
-// Mean of unit quaternions (algorithms.md 1.2): sign-align every quaternion to a seed (the
-// first one), average the components, normalise; repeat once with the result as seed.
+// Mean of unit quaternions (the reference rotation of tangent coordinates): sign-align
+// every quaternion to a seed (the first one), average the components, normalise; repeat
+// once with the result as seed.
 // Returns identity for an empty input or when the average vanishes.
 Eigen::Quaterniond MeanRotation(std::span<const Eigen::Quaterniond> rotations);
 

@@ -1,4 +1,4 @@
-// Leave-one-out evaluation protocol (algorithms.md 9.1): clips are grouped into folds by a
+// Leave-one-out evaluation protocol: clips are grouped into folds by a
 // label (leave-one-style-out: --loso style); for each fold a database is built from the
 // other folds' clips, every clip of the fold is reduced to a sketch, filled by each method
 // and scored against itself. Locomotion and gestures are summarised separately.

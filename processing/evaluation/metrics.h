@@ -1,6 +1,8 @@
-// Scores of a filled clip against the ground truth it was sketched from (algorithms.md 8.4
-// and 9.4). Positions are in centimetres relative to the motion root (the hips), so the
-// numbers measure the pose, not the trajectory the sketch already fixed.
+// Scores of a filled clip against the ground truth it was sketched from: MPJPE, angle error,
+// NPSS, jitter ratio, foot skating and key fidelity, as the motion-completion literature
+// defines them (LaFAN1, Harvey et al. 2020; Zhang et al. 2018). Positions are in
+// centimetres relative to the motion root (the hips), so the numbers measure the pose, not
+// the trajectory the sketch already fixed.
 #pragma once
 
 #include <vector>

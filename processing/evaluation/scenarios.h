@@ -1,4 +1,4 @@
-// The sketches an animator makes, as evaluation scenarios (issue 15: "wider sketches"): which
+// The sketches an animator makes, as evaluation scenarios: which
 // joints of the database's (Bandai-Namco) rig are keyed and how often. Each is scored like any
 // sketch, with `mean` as its own baseline.
 #pragma once

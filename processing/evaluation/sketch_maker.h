@@ -1,6 +1,6 @@
-// Sketches made from ground truth for evaluation (algorithms.md 9.2, task T1): a captured
-// clip is reduced to what an animator would have keyed, so that a fill method can be scored
-// against the capture it came from.
+// Sketches made from ground truth for evaluation: a captured clip is reduced to what an
+// animator would have keyed (some joints, every k frames), so that a fill method can be
+// scored against the capture it came from.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // Multiresolution (Gaussian/Laplacian) pyramid over time, after Bruderlin and Williams 1995
-// (algorithms.md section 2; thesis chapter 3). No subsampling: level k applies the 5-tap
+// (thesis chapter 3). No subsampling: level k applies the 5-tap
 // binomial kernel [1/16, 1/4, 3/8, 1/4, 1/16] with its taps spread 2^k frames apart
 // ("a trous"). Every column of the input matrix is one channel (frames are rows), so the
 // same code filters tangent coordinates, root features or raw Euler curves.

@@ -1,4 +1,4 @@
-// The processing graph (issue 5): nodes described as plain data (GraphConfig, filled from a
+// The processing graph: nodes described as plain data (GraphConfig, filled from a
 // pipeline file by library/pipeline), validated as a whole before anything runs (types,
 // options, ports, cycles), ordered topologically and run one node after another.
 //

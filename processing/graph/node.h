@@ -1,4 +1,4 @@
-// Node types of the processing graph (issue 5): typed ports, option specifications with
+// Node types of the processing graph: typed ports, option specifications with
 // defaults, units and ranges, and the Node interface a validated node runs through. The graph
 // core knows nothing of files or JSON: nodes that read or write files are registered by the
 // use cases (library/pipeline/), algorithm nodes by processing/graph/processing_nodes.h.

@@ -1,4 +1,4 @@
-// Resampling a uniformly sampled clip to another frame rate (algorithms.md 1.1): every
+// Resampling a uniformly sampled clip to another frame rate: every
 // stage works at one working rate (default 30 Hz), so clips from 120 Hz captures or from
 // keyed sketches imported at their own rate are brought onto one frame grid first.
 #pragma once

@@ -1,4 +1,5 @@
-// Signal space of every analysis and synthesis stage (algorithms.md 1.2-1.3).
+// Signal space of every analysis and synthesis stage, free of Euler wrap-around and gimbal
+// lock while a joint stays within about 150 degrees of its reference.
 //
 // Joint rotations become "tangent coordinates" v = Log(Rbar^-1 R) about a per-joint
 // reference rotation Rbar (the mean over a clip or a database), free of Euler wrap-around.

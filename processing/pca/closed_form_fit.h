@@ -1,5 +1,5 @@
 // Closed-form regularised fit of a pose PCA model to partially observed poses
-// (algorithms.md 5a.6, after Blanz, Mehl, Vetter and Seidel 2004). Per frame, with the
+// (after Blanz, Mehl, Vetter and Seidel 2004). Per frame, with the
 // observed channels O: minimise |P_O(mu + U c) - y_O|^2_sigma + c^T Lambda^-1 c, i.e. the
 // conditional mean of the Gaussian model given noisy observations. It is the `pca`
 // baseline fill method and the initial guess of the Ceres fit (pca_fit.h).
@@ -14,16 +14,15 @@
 namespace mocapfill {
 
 struct ClosedFormOptions {
-  // Observation noise sigma_n of tangent channels in degrees (5b: 1 degree), scaled by the
-  // channel weight like the channels themselves. Must be > 0 and finite.
+  // Observation noise sigma_n of tangent channels in degrees, scaled by the channel weight
+  // like the channels themselves. Must be > 0 and finite.
   double noise_deg = 1.0;
   // Observation noise of weighted root-feature channels (centimetre-like units, > 0).
   double root_noise = 1.0;
   // Adds the model's per-channel residual variance (what the K components cannot express,
   // PcaModel::residual_variance) to every observed channel's noise variance.
   // Without it the conditional mean trusts observations the subspace cannot reproduce and
-  // extrapolates: on held-out Bandai-Namco walks (legs keyed, 95% model) the unkeyed joints
-  // are then worse than the mean pose (21.3 vs 14.1 degrees).
+  // extrapolates, and the unkeyed joints come out worse than the mean pose (docs/pca.md).
   bool include_model_residual = true;
 
   Status Validate() const;

@@ -1,4 +1,4 @@
-// Full-pose variant of the key fit (algorithms.md 6.2): the unknowns are the pose vectors,
+// Full-pose variant of the key fit (pca_fit.h): the unknowns are the pose vectors,
 // keyed joint blocks are constant, so keys hold exactly; a probabilistic-PCA prior keeps
 // the free joints plausible.
 #include <Eigen/Cholesky>

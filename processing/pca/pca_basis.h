@@ -1,7 +1,7 @@
-// Estimating the linear Gaussian part of a PcaModel from weighted pose vectors
-// (algorithms.md 5a.3-5a.4): mean, covariance eigen-decomposition, choice of the number of
-// components by explained variance, and the per-frame smoothness statistics used by the
-// Ceres fit (6.2). Works on plain Eigen matrices; clip handling is in pca_model_builder.h.
+// Estimating the linear Gaussian part of a PcaModel from weighted pose vectors: mean,
+// covariance eigen-decomposition, choice of the number of components by explained variance
+// (the thesis's compression), and the per-frame smoothness statistics used by the Ceres fit
+// (pca_fit.h). Works on plain Eigen matrices; clip handling is in pca_model_builder.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -14,11 +14,13 @@ namespace mocapfill {
 
 struct PcaBasisOptions {
   // Keep the fewest components whose cumulative share of the total variance reaches this
-  // fraction (5a.4). Range (0, 1]; 1 keeps every component with non-zero variance.
+  // fraction. Range (0, 1]; 1 keeps every component with non-zero variance.
   double variance_kept = 0.95;
-  // Upper bound on the number of components (>= 1). The cap keeps the fit fast (6.4).
+  // Upper bound on the number of components (>= 1). The cap keeps the Ceres fit fast: its
+  // cost grows with the cube of the number of components.
   int max_components = 30;
-  // 1 = pose PCA (default); W > 1 = window PCA over W consecutive frames (5a.1).
+  // 1 = pose PCA (default); W > 1 = window PCA over W consecutive frames, which captures
+  // timing too.
   int window_frames = 1;
   // Hop between the windows used to estimate a window model (>= 1, frames); larger hops
   // make estimation cheaper on big databases. Ignored for pose PCA.

@@ -2,7 +2,7 @@
 // skeleton (joints matched by name), encoding a clip (tangent coordinates about the
 // model's reference, root features, channel weights) and decoding fitted or edited pose
 // vectors back into a clip. Root heading and planar progression always come from the
-// input clip, never from the model (algorithms.md 1.3, 5c).
+// input clip, never from the model: a pose model holds no place or direction in the world.
 #pragma once
 
 #include <Eigen/Core>

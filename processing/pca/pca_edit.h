@@ -1,4 +1,4 @@
-// Editing a motion with component dials (algorithms.md 5a.5, thesis chapter 5: a model
+// Editing a motion with component dials (thesis chapter 5: a model
 // "used to edit and enhance an animation after it was created"). Each dial moves one
 // component's coefficient by beta standard deviations (beta * sqrt(lambda_k)) on every
 // frame; the part of the motion the model does not explain (the residual) is kept by
@@ -20,7 +20,7 @@ struct ComponentDial {
 
 struct PcaEditOptions {
   std::vector<ComponentDial> dials;  // at most one dial per component
-  // Bound on |beta| (5b: +-3). Larger moves leave the data the model was built from.
+  // Bound on |beta|. Larger moves leave the data the model was built from.
   double max_abs_sigmas = 3.0;
   // true: y' = y + sum beta_k sqrt(lambda_k) u_k (residual kept, all dials 0 = identity);
   // false: y' = mu + U (c + delta), i.e. the edited motion is rebuilt from the model only.

@@ -1,4 +1,5 @@
-// Fitting a pose PCA model to keyframe constraints with Ceres (algorithms.md 6.2-6.4).
+// Fitting a pose PCA model to keyframe constraints with Ceres (thesis chapter 5; the
+// formulation of Safonova et al. 2004 and Chai and Hodgins 2005: keys, prior, smoothness).
 //
 // Subspace variant (FitPcaToKeys): unknowns are the coefficients c_t (K per frame) and the
 // pose is y_t = mu + U c_t. Least-squares residual blocks, each divided by its sigma:
@@ -69,7 +70,7 @@ struct PcaKeyProblem {
   Eigen::MatrixXd guide_values;  // optional guide (e.g. the fragment result); empty = none
   ChannelMask guide_mask;        // where the guide applies (usually the unkeyed joints)
   // Optional starting point (frames x K for the subspace fit, frames x pose_dim for the
-  // full-pose fit); empty = closed-form fit of the channel keys (5a.6).
+  // full-pose fit); empty = closed-form fit of the channel keys (closed_form_fit.h).
   Eigen::MatrixXd initial;
 };
 
@@ -82,9 +83,8 @@ enum class FitLinearSolver {
 struct PcaFitOptions {
   double key_sigma_deg = 1.0;        // s_key: tolerance of rotation keys (degrees, > 0)
   double root_key_sigma = 1.0;       // tolerance of root-feature keys (weighted, cm-like units, > 0)
-  // s_pos: tolerance of position keys (cm, > 0). Design 6.2 proposes 1 cm [O]; at that sigma
-  // the prior wins a centimetre or two (feet of a held-out walk: max 3.4 cm subspace, 2.2 cm
-  // full-pose), so the default is tighter to keep keyed feet within 1 cm (max 0.4 cm).
+  // s_pos: tolerance of position keys (cm, > 0). At 1 cm the prior pulls keyed feet a
+  // centimetre or two off their keys; a quarter of that keeps them within 1 cm (docs/pca.md).
   double position_sigma_cm = 0.25;
   double position_huber_cm = 0.0;    // > 0: Huber loss at this scale (cm) for inconsistent position keys
   double guide_sigma_deg = 10.0;     // s_guide (degrees, > 0)

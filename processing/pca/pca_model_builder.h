@@ -1,6 +1,7 @@
-// Building a PcaModel from a motion database (algorithms.md 5a): selecting the clips of
-// some behaviours (behaviour-specific models, 6.5), weighting the channels so distances
-// approximate joint displacements in centimetres (5a.2), and estimating the basis.
+// Building a PcaModel from a motion database (thesis chapter 5): selecting the clips of
+// some behaviours (behaviour-specific models, after Safonova et al. 2004), weighting the
+// channels so distances approximate joint displacements in centimetres, and estimating the
+// basis.
 #pragma once
 
 #include <string>
@@ -21,7 +22,7 @@ struct PcaModelOptions {
   // "happy"); "key=value" matches only that label key. A clip is used when any label matches.
   std::vector<std::string> labels;
   // Root velocity and yaw-rate features are weighted as the displacement (cm) they cause
-  // over this horizon (s, > 0), so they weigh like a few frames of joint motion [O].
+  // over this horizon (s, > 0), so they weigh like a few frames of joint motion.
   double root_rate_horizon_s = 0.1;
 
   Status Validate() const;

@@ -1,4 +1,4 @@
-// Projection onto and reconstruction from a PcaModel's components (algorithms.md 5a.5),
+// Projection onto and reconstruction from a PcaModel's components,
 // and the explained-variance / reconstruction-error figures `pca info` reports.
 #pragma once
 

@@ -1,8 +1,8 @@
-// PCA methods on a keyframed sketch clip (algorithms.md 5a.6, 6, 9.3 baseline B4):
+// PCA methods on a keyframed sketch clip:
 //  - FillMissingJointsPca: the `pca` fill method. Per frame, the closed-form conditional
 //    mean of the unkeyed joints given the keyed joints (densified, as the sketch clip holds
 //    them at every frame) and the root features.
-//  - FitSketchToKeys: the Ceres fit of section 6 with keys taken from the sketch's keyed
+//  - FitSketchToKeys: the Ceres fit (pca_fit.h) with keys taken from the sketch's keyed
 //    frames, optional world position keys (feet, hands), and an optional guide clip (the
 //    fragment result in the hybrid pipeline) for the unkeyed joints.
 // A joint is keyed when the sketch's keys list rotation frames for it; the motion root's

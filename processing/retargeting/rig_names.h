@@ -1,8 +1,8 @@
-// Joint names as the naming families spell them (retargeting.md, section 2): a name is cut
-// into a namespace prefix ("mixamorig:"), a side (Left/Right, L/R, _l/.L, l_), a stem
-// ("upleg", "forearm", "spine01") and the words that make a joint a helper (end bones,
-// twist halves, IK targets, fingers, face). Names only propose: rig_mapping.cc lets the
-// hierarchy and the pose decide.
+// Joint names as the naming families spell them (Mixamo, Unreal, Unity, Biovision, ...): a
+// name is cut into a namespace prefix ("mixamorig:"), a side (Left/Right, L/R, _l/.L, l_),
+// a stem ("upleg", "forearm", "spine01") and the words that make a joint a helper (end
+// bones, twist halves, IK targets, fingers, face). Names only propose: rig_mapping.cc lets
+// the hierarchy and the pose decide.
 #pragma once
 
 #include <string>

@@ -16,7 +16,7 @@ using Eigen::Vector3d;
 
 // Key times this close to a frame of the output grid are on it, and two sample times this
 // close are one: glTF stores times as float32, whose spacing grows with the time (about
-// 4e-6 s at 33 s), so a fixed 1e-6 s split a 30 Hz key read from a glb from its own frame.
+// 4e-6 s at 33 s), so a fixed 1e-6 s would split a 30 Hz key read from a glb from its own frame.
 double OnGridS(double time_s) {
   return std::max(1e-6, 4.0 * std::numeric_limits<float>::epsilon() * std::abs(time_s));
 }

@@ -1,5 +1,5 @@
-// Speed of the PCA key fit (issue #5 target: Ceres fit of a 300-frame clip with up to 30
-// components under 200 ms), stage by stage, against a direct sparse solve of the same
+// Speed of the PCA key fit (target: Ceres fit of a 300-frame clip with up to 30 components
+// under 200 ms), stage by stage, against a direct sparse solve of the same
 // linear problem (Eigen SimplicialLDLT on the normal equations) in the same run.
 //   pca_bench [data-dir] [repeats]
 // Model: Bandai-Namco walks of 14 styles (the "sad" style held out), 30 components.

@@ -1,5 +1,5 @@
 // What a batch leaves behind when it is killed, and what two processes writing the same
-// output leave: never a partial or mixed file under a final name (issue 17, "nothing lost").
+// output leave: never a partial or mixed file under a final name.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <unistd.h>

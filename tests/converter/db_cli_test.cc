@@ -101,7 +101,7 @@ TEST(DbCli, UsageErrorsExitWith1AndWriteNothing) {
   EXPECT_EQ(gains.exit_code, 1);
   EXPECT_NE(gains.output.find("band L12"), std::string::npos) << gains.output;
   EXPECT_FALSE(fs::exists(dir + "/f.glb"));
-  // A clip of another humanoid rig is retargeted onto the database's rig (issue #14); one that is
+  // A clip of another humanoid rig is retargeted onto the database's rig; one that is
   // not humanoid is refused naming the file, and nothing is written.
   std::string renamed = ReadAll(in);
   renamed.replace(renamed.find("UpperArm_L"), 10, "LeftArm123");

@@ -1,4 +1,4 @@
-// Hostile sizes, generated at test time (issue 17): each input is read within a memory bound
+// Hostile sizes, generated at test time: each input is read within a memory bound
 // or refused with exit 2 and a message naming the file; nothing is killed, nothing hangs
 // (each run has a time limit). The bounds are the ones the README documents.
 #include <gtest/gtest.h>
@@ -93,7 +93,8 @@ TEST(HostileInput, GigabyteOfBvhRowsIsRefusedWithinTheMemoryBound) {
     EXPECT_NE(run.output.find("too large"), std::string::npos) << run.output;
     if (kMeasuresMemory) {
       // The documented bound: the input file's bytes (1 GiB here), plus 1.1 GB for 20 million
-      // joint-frames when rows are read (the understated file; a doubling vector took 2.9 GB).
+      // joint-frames when rows are read (the understated file; a doubling vector would take
+      // 2.9 GB).
       EXPECT_LT(run.max_rss_mb, declared == 1 ? 2300 : 1200);
     }
     EXPECT_FALSE(std::ifstream(dir + "/out.glb").good());

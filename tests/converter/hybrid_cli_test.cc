@@ -1,5 +1,5 @@
 // `mocapfill fill --method pca|hybrid` and `eval --methods ...,pca,hybrid` end to end on the
-// shipped sketch and the embedded default database (issue #5, part 2). Every glTF written under
+// shipped sketch and the embedded default database. Every glTF written under
 // TestOutputDir() is checked by the Khronos validator in CI.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -20,7 +20,7 @@ using testing::ReadAll;
 using testing::RunCli;
 using testing::RunResult;
 
-constexpr double kKeyToleranceDeg = 0.5;  // subspace target (algorithms.md 9.5)
+constexpr double kKeyToleranceDeg = 0.5;  // target mean key error of the subspace fit
 
 std::string GlbSketch() { return testing::FixturePath("sketches/walk_proud_002_legs8.glb"); }
 

@@ -1,4 +1,4 @@
-// `mocapfill pca build / info / edit` (issue #5): exit codes, messages, and edited glTF
+// `mocapfill pca build / info / edit`: exit codes, messages, and edited glTF
 // written under test-output/pca, which CI validates with the Khronos glTF-Validator.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

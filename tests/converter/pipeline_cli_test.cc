@@ -25,7 +25,7 @@ using testing::RunResult;
 
 namespace fs = std::filesystem;
 
-constexpr double kKeyToleranceDeg = 0.5;  // issue #4: keyed joints hold their keys
+constexpr double kKeyToleranceDeg = 0.5;  // keyed joints hold their keys
 constexpr double kConvertToleranceRad = 1e-5;  // glTF stores float rotations
 
 std::string Example(const std::string& name) { return testing::FixturePath("pipelines/" + name); }
@@ -98,7 +98,7 @@ TEST(PipelineExamples, FilterChangesTheWalkButKeepsItsFrames) {
   ASSERT_TRUE(walk.ok());
   ASSERT_EQ(out.clips.size(), 1u);
   EXPECT_EQ(out.clips[0].num_frames, walk->clips[0].num_frames);
-  // Gains 1.5 on bands 1-2 move the walk by a visible amount on average (measured ~0.5 deg).
+  // Gains 1.5 on bands 1-2 move the walk by a visible amount on average (about 0.5 deg).
   EXPECT_GT(MeanAngleDeg(out.clips[0], walk->clips[0]), 0.1);
   EXPECT_LT(MeanAngleDeg(out.clips[0], walk->clips[0]), 5.0);
 }
@@ -152,7 +152,7 @@ TEST(PipelineExamples, PcaFitGuidedByFragmentsAndTextured) {
   // The full-pose fit holds the keys exactly and texturing re-pins them.
   EXPECT_LT(KeyErrorDeg(sketch, out.clips[0]), kKeyToleranceDeg);
   // Without re-pinning the fragments' high bands move the keyed joints at their keys too
-  // (measured: 2.8 deg mean), which shows the texture node did add detail.
+  // (about 2.8 deg mean), which shows the texture node did add detail.
   const Scene loose = RunExample("fill_pca_fit_texture.json", "fill_pca_fit_texture_loose.glb",
                                  "--set detail.repin_keys=false");
   ASSERT_EQ(loose.clips.size(), 1u);

@@ -1,4 +1,4 @@
-# `mocapfill pca` verbs (issue #5); edited glTF goes to test-output/pca for the validator.
+# `mocapfill pca` verbs; edited glTF goes to test-output/pca for the validator.
 mocapfill_add_test(pca_cli_tests
   CORPUS [=[^PcaCli\.]=]
   SOURCES

@@ -1,4 +1,4 @@
-# `mocapfill run` (issue 5): pipeline files, validation errors (exit 1, nothing written), the
+# `mocapfill run`: pipeline files, validation errors (exit 1, nothing written), the
 # shipped example pipelines end to end (glTF under test-output/pipeline for the validator).
 mocapfill_add_test(pipeline_cli_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/pipeline_cli_test.cc ${CMAKE_CURRENT_LIST_DIR}/pipeline_file_test.cc

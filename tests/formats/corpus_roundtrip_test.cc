@@ -1,4 +1,4 @@
-// Corpus round trips over every BVH of the shared data (issue #2):
+// Corpus round trips over every BVH of the shared data:
 //  - BVH -> glb -> BVH keeps every rotation (geodesic < 1e-4 deg) and translation (< 1e-5 m),
 //    writes Euler angles in the source's channel order, continuous over time;
 //  - world joint positions by FK of the BVH and, independently, of the glb agree within 0.01 mm.

@@ -13,7 +13,7 @@
 namespace mocapfill {
 namespace {
 
-// What the exporter did before PackRotation was written out: Eigen's own expressions.
+// The reference PackRotation must match bit for bit: Eigen's own expressions.
 void PackWithEigen(const Eigen::Quaterniond& q, Eigen::Vector4d& previous, float* out) {
   Eigen::Vector4d v(q.x(), q.y(), q.z(), q.w());
   if (std::abs(v.squaredNorm() - 1.0) > kRotationUnitTolerance) v.normalize();

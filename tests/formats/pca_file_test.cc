@@ -1,4 +1,4 @@
-// The .pca model file (issue #5): exact round trips, and every way a file can be bad is
+// The .pca model file: exact round trips, and every way a file can be bad is
 // rejected with kInvalidData naming the problem, never a crash or a partial model.
 #include "formats/pca/pca_file.h"
 

@@ -1,4 +1,4 @@
-# .mfdb database files, motion folder labels and SVG plots (issue #3).
+# .mfdb database files, motion folder labels and SVG plots.
 mocapfill_add_test(mfdb_tests
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/mfdb_file_test.cc

@@ -1,4 +1,4 @@
-# The .pca model file (issue #5).
+# The .pca model file.
 mocapfill_add_test(pcafile_tests
   CORPUS [=[^PcaFile\.]=]
   SOURCES

@@ -1,6 +1,6 @@
 // Replays every kept fuzz input through its target in the ordinary test run: the inputs in
-// tests/fuzz/regressions/<target>/ once made a reader crash, leak, hang or exhaust memory
-// (each file's name says what it found), and must now be refused or read cleanly. The
+// tests/fuzz/regressions/<target>/ are inputs that can make a reader crash, leak, hang or
+// exhaust memory (each file's name says what it found), and must be refused or read cleanly. The
 // shipped fixtures of each target's format run through it too, so every target is known to
 // accept what it is seeded with (tools/fuzz.sh seeds from the same files).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Coverage of a sketch by the database (issue 15): a walk the locomotion database holds is
+// Coverage of a sketch by the database: a walk the locomotion database holds is
 // covered and left alone; motions it does not hold (the shipped walk with its thighs turned
 // into poses no take has; a dance, a kick against the default database) are reported as poorly
 // covered, named in a warning, and blended towards the mean pose, which scores no worse than

@@ -18,7 +18,7 @@
 namespace mocapfill {
 namespace {
 
-constexpr double kExactRad = 1e-9;  // issue #3: reconstruction error below 1e-9 on real clips
+constexpr double kExactRad = 1e-9;  // reconstruction error below 1e-9 on real clips
 
 Scene Import(const std::string& path) {
   Result<Scene> scene = ImportFile(path);

@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kExactDeg = 1e-6;       // keys copied: only rounding
-constexpr double kKeyToleranceDeg = 0.5;  // issue #4 key fidelity after texturing
+constexpr double kKeyToleranceDeg = 0.5;  // key fidelity after texturing
 
 using testing::DefaultDb;
 
@@ -192,8 +192,8 @@ TEST(Fill, HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle) {
     mpjpe[method] = m->mpjpe_unkeyed_cm;
     EXPECT_LT(m->bone_length_error, 1e-9);
   }
-  // Measured 9.27 vs 10.52 cm (12% lower) with the 21-clip default database; the full
-  // 174-clip database gains more (docs/fill.md).
+  // About 9.3 vs 10.5 cm (12% lower) with the 21-clip default database; the full 174-clip
+  // database gains more (docs/fill.md).
   EXPECT_LT(mpjpe[FillMethod::kHierarchical], 0.92 * mpjpe[FillMethod::kMean])
       << "hierarchical " << mpjpe[FillMethod::kHierarchical] << " cm, mean " << mpjpe[FillMethod::kMean] << " cm";
 }

@@ -1,4 +1,4 @@
-// The PCA-based fill methods (issue #5, part 2): `pca` (closed form) and `hybrid`
+// The PCA-based fill methods: `pca` (closed form) and `hybrid`
 // (fragments, guided Ceres fit, texture, edits) on the embedded default database
 // (fixtures/default_db: Bandai-Namco locomotion of three styles) and the shipped sketch of a
 // walk in a style that database does not hold (fixtures/sketches).
@@ -25,8 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kExactDeg = 1e-6;          // full-pose keys: rounding only
-constexpr double kSubspaceKeyMeanDeg = 0.5;  // algorithms.md 9.5 target for the subspace variant
-constexpr double kPositionKeyCm = 1.0;      // issue 5: keyed feet within 1 cm
+constexpr double kSubspaceKeyMeanDeg = 0.5;  // target mean key error of the subspace variant
+constexpr double kPositionKeyCm = 1.0;      // target: keyed feet within 1 cm
 
 using testing::DefaultDb;
 

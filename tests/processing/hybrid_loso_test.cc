@@ -1,4 +1,4 @@
-// The leave-one-style-out protocol (algorithms.md 9.1; issue 5 quality target) over the shared
+// The leave-one-style-out protocol (the quality target of the hybrid method) over the shared
 // Bandai-Namco corpus with the hierarchical and hybrid methods. The full protocol (174 clips)
 // takes minutes on the 2-core machine (docs/fill.md has its table); this test runs the walks
 // only (15 folds, one fold per held-out style, 30 clips), each fold's database and PCA model
@@ -54,7 +54,7 @@ TEST(HybridLoso, HybridBeatsHierarchicalOnHeldOutWalkStyles) {
     }
   EXPECT_EQ(result->folds, 15);
   EXPECT_LT(all["hybrid"].mpjpe_unkeyed_cm, all["hierarchical"].mpjpe_unkeyed_cm);
-  // Walks alone sit above the 1.5 jitter bound for every fragment method (measured 1.656 for
+  // Walks alone sit above the 1.5 jitter bound for every fragment method (about 1.66 for
   // both); the [0.7, 1.5] target holds on the whole locomotion set (docs/fill.md). Here the
   // hybrid must not be jitterier than the hierarchical method it starts from.
   EXPECT_GT(all["hybrid"].jitter_ratio, 0.7);

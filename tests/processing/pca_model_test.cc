@@ -1,4 +1,4 @@
-// PCA model building, projection and component edits on Bandai-Namco walks (issue #5).
+// PCA model building, projection and component edits on Bandai-Namco walks.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Real data for the PCA tests: Bandai-Namco dataset-1 clips from the shared corpus, imported
-// and built into an in-memory database, and sketches of held-out clips (task T1 of
-// algorithms.md 9.2: root and legs keyed every k frames).
+// and built into an in-memory database, and sketches of held-out clips (root and legs keyed
+// every k frames).
 #pragma once
 
 #include <string>

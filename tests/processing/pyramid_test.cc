@@ -38,7 +38,8 @@ TEST(Pyramid, OptionsValidateRejectsEveryInvalidValue) {
 }
 
 TEST(Pyramid, BandPeaksMatchTheDesignTable) {
-  // algorithms.md 2a: at 30 Hz L0 15, L1 4.2, L2 2.0, L3 0.99, L4 0.49, L5 0.25 Hz.
+  // Band peaks of the 5-tap a-trous pyramid at 30 Hz: L0 15, L1 4.2, L2 2.0, L3 0.99, L4 0.49,
+  // L5 0.25 Hz.
   const double expected[] = {15.0, 4.2, 2.0, 0.99, 0.49, 0.25};
   for (int k = 0; k < 6; ++k) EXPECT_NEAR(BandPeakHz(k, 30.0), expected[k], 0.03 * expected[k]) << "band " << k;
   // The band index shifts by log2(rate ratio): L3 at 30 Hz is L5 at 120 Hz.

@@ -1,4 +1,4 @@
-// The fill use case on users' rigs and key times (issue #14): the shipped sketch on the
+// The fill use case on users' rigs and key times: the shipped sketch on the
 // database's own rig, sketches keyed at 24 and 60 fps and at irregular times, a CMU sketch
 // with texturing on, and translation keys that would stretch bones. Keys are checked at the
 // animator's exact key times against the values the test wrote, not against the tool's own
@@ -32,7 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kKeyToleranceDeg = 0.01;  // issue #14: keys below 0.01 degrees at their times
+constexpr double kKeyToleranceDeg = 0.01;  // keys below 0.01 degrees at their times
 
 using testing::DefaultDb;
 
@@ -74,8 +74,8 @@ TEST(SketchFill, ShippedSketchOnTheDatabaseRig) {
 // take, with end sites that a database read from a .mfdb (as `fill` reads its embedded one)
 // lacks, is still the database's rig, so the fill copies its rotations exactly. The clip
 // is part of the default database: its legs find their own take, and the synthesised hands
-// and head come back as captured (a rig made anew from the BVH aimed the hands by its end
-// sites, 35 degrees off the database's, and took the first frame as its rest).
+// and head come back as captured (a rig made anew from the BVH would aim the hands by its end
+// sites, 35 degrees off the database's, and take the first frame as its rest).
 TEST(SketchFill, DatabaseRigReadFromBvhIsTheDatabaseRig) {
   const std::string stored = testing::ScratchDir("sketch_db_rig") + "/default.mfdb";
   ASSERT_TRUE(WriteMfdb(DefaultDb(), stored).ok());
@@ -111,7 +111,8 @@ TEST(SketchFill, DatabaseRigReadFromBvhIsTheDatabaseRig) {
 
 // Key times read from a glb are float32, whose spacing at 40 s (about 4e-6 s) exceeds a fixed
 // 1e-6 s grid tolerance: such keys still lie on the sketch's 30 Hz grid, and the output is
-// that uniform grid (once, two samples equal in float32 made the writer refuse the file).
+// that uniform grid (with a fixed tolerance, two samples equal in float32 would make the
+// writer refuse the file).
 TEST(SketchFill, LongSketchKeysStayOnTheirGrid) {
   Result<Scene> source = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
   ASSERT_TRUE(source.ok());
@@ -257,7 +258,7 @@ const MotionDatabase& BandaiDbWithout(const std::string& style) {
   return cache.emplace(style, std::move(*built)).first->second;
 }
 
-// Issue #14: a sketch on the Geno character (hips and legs keyed every 8 frames, made by
+// A sketch on the Geno character (hips and legs keyed every 8 frames, made by
 // retargeting a Bandai-Namco clip onto Geno) filled against the Bandai-Namco database that
 // lacks the clip's style, scored like the same clip filled on the Bandai rig: the upper body's
 // bone-direction error within 15%.

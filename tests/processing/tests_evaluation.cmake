@@ -1,4 +1,4 @@
-# Sketch making, fill metrics and the fill methods on real data (issue #4).
+# Sketch making, fill metrics and the fill methods on real data.
 mocapfill_add_test(evaluation_tests
   CORPUS [=[^(SketchMaker\.|FillMetrics\.(TruthAgainstItselfScoresZero|SketchAgainstTruthMeasuresTheMissingUpperBody)$)]=]
   SOURCES

@@ -1,10 +1,10 @@
-# Fill methods on the embedded default database and the shipped sketch (issue #4).
+# Fill methods on the embedded default database and the shipped sketch.
 mocapfill_add_test(fill_tests
   CORPUS [=[^Fill\.HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc
   LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_synthesis mocapfill_formats)
 
-# PCA-based fill methods: `pca` (closed form) and `hybrid` (issue #5, part 2).
+# PCA-based fill methods: `pca` (closed form) and `hybrid`.
 mocapfill_add_test(hybrid_fill_tests
   SLOW [=[^HybridFill\.FootPositionKeysHoldWithinACentimetre$]=]
   CORPUS [=[^HybridFill\.CapturedWalkOfAnUnseenStyleBeatsTheMeanPose$]=]
@@ -19,7 +19,7 @@ mocapfill_add_test(hybrid_loso_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_loso_test.cc
   LIBS mocapfill_evaluation mocapfill_mfdb mocapfill_formats)
 
-# Coverage of the sketch by the database: warnings and blending towards the mean pose (issue 15).
+# Coverage of the sketch by the database: warnings and blending towards the mean pose.
 mocapfill_add_test(coverage_tests
   CORPUS [=[^Coverage\.(DanceAgainstTheDefaultDatabaseWarnsAndIsNoWorseThanMean|CapturedWalkOfAnotherStyleIsCovered)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/coverage_test.cc

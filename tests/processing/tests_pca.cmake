@@ -1,4 +1,4 @@
-# PCA model, edits, closed-form and Ceres key fits (issue #5), on the shared corpus.
+# PCA model, edits, closed-form and Ceres key fits, on the shared corpus.
 mocapfill_add_test(pca_tests
   CORPUS [=[^Pca(Model|Edit|Fit)\.]=]
   SOURCES

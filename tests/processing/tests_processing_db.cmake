@@ -1,4 +1,4 @@
-# Resampling, tangent space, pyramid filtering, analysis and motion database (issue #3).
+# Resampling, tangent space, pyramid filtering, analysis and motion database.
 mocapfill_add_test(processing_db_tests
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/resample_test.cc

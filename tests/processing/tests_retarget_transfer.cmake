@@ -1,4 +1,4 @@
-# Rest-pose-aware retargeting between real rigs and the any-rig fill use case (issue #14).
+# Rest-pose-aware retargeting between real rigs and the any-rig fill use case.
 add_library(mocapfill_test_bone_directions STATIC ${CMAKE_CURRENT_LIST_DIR}/../support/bone_directions.cc)
 target_link_libraries(mocapfill_test_bone_directions PUBLIC mocapfill_retargeting)
 mocapfill_set_warnings(mocapfill_test_bone_directions)

@@ -1,5 +1,5 @@
 // World bone directions of mapped canonical bones, the rig-independent measure of
-// retargeting (retargeting.md 4): a segment from one canonical bone's joint to the next, seen
+// retargeting: a segment from one canonical bone's joint to the next, seen
 // in the hips' canonical frame so that two rigs with other local axes compare directly.
 #pragma once
 

@@ -1,4 +1,4 @@
-// PCA nodes (algorithms.md 5-7): pca_build (a model of a database, in memory), pca_fit (the
+// PCA nodes (thesis chapters 5 and 6): pca_build (a model of a database, in memory), pca_fit (the
 // sketch's keys fitted by the model: closed form, or the Ceres fit optionally guided by a fill
 // result) and pca_edit (component dials in standard deviations, as `mocapfill pca edit`).
 #include <cmath>

@@ -1,8 +1,9 @@
 // texture: gives a keyframed sketch the high-frequency detail of a captured (or filled)
-// motion (algorithms.md 3a.1; processing/synthesis/assembly.h TextureChannels): each chosen
-// channel becomes the sketch's smooth bands plus the source's bands above the keys' Nyquist
-// rate. Both motions are decomposed about the sketch's mean rotations so the channels agree;
-// the keys are then re-pinned (RepinKeys), as the fill's texturing stage does.
+// motion (Pullen and Bregler's texturing; processing/synthesis/assembly.h TextureChannels):
+// each chosen channel becomes the sketch's smooth bands plus the source's bands above the
+// keys' Nyquist rate. Both motions are decomposed about the sketch's mean rotations so the
+// channels agree; the keys are then re-pinned (RepinKeys), as the fill's texturing stage
+// does.
 #include <algorithm>
 
 #include "processing/graph/nodes/node_support.h"

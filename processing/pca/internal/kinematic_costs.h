@@ -1,4 +1,4 @@
-// Ceres functors for the non-linear key residuals of algorithms.md 6.2: geodesic rotation
+// Ceres functors for the non-linear key residuals of the key fit (pca_fit.h): geodesic rotation
 // keys and keyed joint positions through forward kinematics. Both read a joint's weighted
 // tangent channels either from the PCA coefficients of the frame (subspace variant:
 // y_j = mu_j + U_j c) or directly from a 3-parameter joint block (full-pose variant).

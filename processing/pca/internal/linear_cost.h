@@ -1,7 +1,7 @@
 // A Ceres cost whose residual is affine in its parameter blocks:
 //   r = sum_b A_b x_b - offset,
 // with constant Jacobians A_b. Every PCA residual except geodesic and position keys is
-// of this form (key rotations, prior, smoothness, guide: algorithms.md 6.2-6.4), so an
+// of this form (key rotations, prior, smoothness, guide: pca_fit.h), so an
 // analytic cost avoids automatic differentiation entirely. Internal: Ceres types must
 // not appear in public headers; include only from processing/pca/*.cc.
 #pragma once

@@ -129,7 +129,7 @@ bool TransparentHugePagesOff() {
 }
 
 // Whole 2 MiB pieces are huge-page eligible; a last piece the buffer fills less than
-// 400 KiB of is not (zeroing 2 MiB for it cost more than its small pages), and those
+// 400 KiB of is not (zeroing 2 MiB for it costs more than its small pages), and those
 // small pages are already there (faulted in one call).
 TEST(LargeBuffer, ShortTailStaysInSmallPagesAlreadyFaultedIn) {
   constexpr size_t kMiB = size_t{1} << 20;
