@@ -111,7 +111,7 @@ namespace {
 __attribute__((always_inline)) inline void SinCosDegreesLoop(const double* __restrict deg, size_t n,
                                                              double* __restrict sine, double* __restrict cosine) {
   // Whether any angle needs libm is found in the vectorised loop: a second scalar pass over
-  // every angle took a third of this function's time.
+  // every angle would cost a large share of this function.
   uint64_t large = 0;
   for (size_t i = 0; i < n; ++i) {
     SinCosReduced(deg[i], sine[i], cosine[i]);

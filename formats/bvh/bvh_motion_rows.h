@@ -1,6 +1,6 @@
-// Internal to formats/bvh: one motion row from text to local joint transforms, shared by
-// the serial row loop (bvh_motion.cc, which reports every error with line:col) and the
-// two-thread one for large files (bvh_motion_parallel.cc).
+// Internal to the BVH readers: one motion row from text to local joint transforms, shared by
+// the serial row loop (bvh_motion.cc, which reports every error with line:col) and the convert
+// fast path's (formats/fast_convert: rows on two threads, rows straight into .glb tracks).
 #pragma once
 
 #include <Eigen/Geometry>

@@ -2,8 +2,8 @@
 // straight into the .glb's float32 tracks (bvh_track_rows.h) and the JSON comes from the
 // glTF writer (WriteGlbHeadForTracks), so the file is byte for byte the one ReadBvh and
 // WriteGlb make, with a fifth of the memory and without the passes over the clip between
-// them (for a CMU clip: 4.8 MB of doubles, ~1,200 freshly faulted pages, validation,
-// scaling and keying passes).
+// them (the double-precision clip, its freshly faulted pages, and the validation, scaling
+// and keying passes).
 #pragma once
 
 #include <optional>

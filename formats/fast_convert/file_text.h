@@ -1,6 +1,6 @@
 // A whole input text, mapped from the page cache when that is cheaper than copying it.
-// Reading a CMU clip's 2.07 MB into a fresh buffer cost 0.3-0.4 ms here (a 2 MiB page
-// zeroed, then the copy) against 0.2 ms to map it: a few percent of a 5 ms conversion.
+// Reading a large file into a fresh buffer zeroes its pages and copies the text; mapping it
+// does neither (docs/performance.md).
 //
 // A mapped file that another process truncates while it is being parsed would end the
 // process with SIGBUS. Instead, a guard installed with the first mapping puts zero-filled

@@ -17,10 +17,9 @@ namespace {
 
 constexpr size_t kHugePage = size_t{2} << 20;
 constexpr size_t kOwnMappingMinBytes = size_t{1} << 20;
-// A huge page is zeroed whole at its first touch (about 0.33 ms here), a small one costs
-// about 3.2 us with its fault: a last huge page holding less than this much of the buffer
-// is cheaper as small pages (a CMU clip's 2.07 MB text left 1.9 MiB of its second huge
-// page zeroed for nothing).
+// A huge page is zeroed whole at its first touch, about a hundred times the cost of a small
+// page's fault: a last huge page holding less than this much of the buffer is cheaper as
+// small pages.
 constexpr size_t kHugeTailMinBytes = size_t{400} << 10;
 
 size_t RoundUp(size_t bytes, size_t to) { return (bytes + to - 1) / to * to; }
@@ -31,8 +30,7 @@ LargeBuffer::LargeBuffer(size_t bytes) : size_(bytes), capacity_(bytes) {
   if (bytes < kOwnMappingMinBytes) {
     data_ = static_cast<unsigned char*>(std::malloc(bytes > 0 ? bytes : 1));
     if (data_ == nullptr) throw std::bad_alloc();
-    // From 128 KiB malloc maps a fresh block, and a read into one faulted once per page:
-    // 42 times for a Bandai clip's 160 KB text, 0.5 ms here.
+    // From 128 KiB malloc maps a fresh block, and a read into one would fault once per page.
     PrefaultForWrite(data_, bytes);
     return;
   }

@@ -1,9 +1,8 @@
 // One block of memory for a whole input text or a whole set of output tracks. Not
 // zero-filled, and from 1 MiB up mapped on its own, 2 MiB-aligned and marked for
-// transparent huge pages where the kernel offers them (madvise mode, as on Debian). In the
-// VMs mocapfill is measured on, first touching a 4 KiB page costs about 3 us; a CMU clip's
-// text and tracks span 900 such pages, and 2 MiB pages made 8 MiB cost 1.3 ms to fault
-// in instead of 6.5 ms, and 0.06 ms to release instead of 0.8 ms.
+// transparent huge pages where the kernel offers them (madvise mode, as on Debian). In a
+// virtual machine first touching a 4 KiB page is an exit to the hypervisor; 2 MiB pages make
+// a large buffer several times cheaper to fault in and to release (docs/performance.md).
 #pragma once
 
 #include <cstddef>
@@ -45,16 +44,16 @@ class LargeBuffer {
 };
 
 // Asks the kernel to map the whole pages inside [data, data + bytes) for writing now, in
-// one call, instead of one page fault per 4 KiB page on first touch (a CMU clip's arrays
-// are 2,000 pages; in a VM each fault is an exit, 3-12 us here against under 1 us a page
-// for the call). Only worth it for buffers that are about to be written in full. Does
+// one call, instead of one page fault per 4 KiB page on first touch (in a VM each fault is
+// an exit to the hypervisor, several times dearer than a page mapped by the call). Only
+// worth it for buffers that are about to be written in full. Does
 // nothing where the kernel lacks MADV_POPULATE_WRITE.
 void PrefaultForWrite(void* data, size_t bytes);
 
 // Makes malloc keep `bytes` free at the top of its heap (M_TOP_PAD: every growth adds that
 // much, and trimming leaves it), grows the heap that far now and maps all of it for writing
 // in one call. For a short process whose small allocations would otherwise fault in a fresh
-// heap page at a time: converting a Bandai clip took 44 heap faults fewer, 0.97 of its time.
+// heap page at a time (docs/performance.md).
 // Does nothing under AddressSanitizer (its own heap) or without MADV_POPULATE_WRITE.
 void ReserveMappedHeap(size_t bytes);
 

@@ -1,11 +1,9 @@
-// A helper thread that starts on another CPU than the one that starts it. The kernels of
-// the small VMs mocapfill is measured on pack new threads onto the busy vCPU rather than
-// wake an idle one (sched_vcpu_pack), so a std::thread started for the second half of a
-// parse often shared the parser's vCPU for 3-4 ms, time-slicing with it, before the load
-// balancer moved it: on a 10 ms CMU conversion that is most of the parallel part. Born
-// with an affinity that leaves the current CPU out, the thread goes straight to another
-// one; once running it takes back the starting thread's mask, so the scheduler may still
-// move it wherever it likes later.
+// A helper thread that starts on another CPU than the one that starts it. Kernels of small
+// VMs (sched_vcpu_pack) put a new thread on the busy vCPU rather than wake an idle one, so a
+// std::thread started for half of a parse would share the parser's vCPU until the load
+// balancer moved it, most of a short parallel parse. Born with an affinity that leaves the
+// current CPU out, the thread goes straight to another one; once running it takes back the
+// starting thread's mask, so the scheduler may still move it wherever it likes later.
 #pragma once
 
 #include <functional>
