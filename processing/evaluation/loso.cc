@@ -5,9 +5,9 @@
 #include <chrono>
 #include <set>
 
+#include "processing/fill/fill_engine.h"
 #include "processing/retargeting/rig_mapping.h"
 #include "processing/synthesis/coverage.h"
-#include "processing/synthesis/fill.h"
 
 namespace mocapfill {
 

@@ -15,8 +15,8 @@
 #include "processing/database/motion_database.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "processing/fill/fill_options.h"
 #include "processing/motion/foot_plant.h"
-#include "processing/synthesis/fill_options.h"
 
 namespace mocapfill {
 

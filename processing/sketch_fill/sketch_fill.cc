@@ -8,11 +8,11 @@
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
 #include "processing/core/stopwatch.h"
+#include "processing/fill/fill_engine.h"
 #include "processing/motion/key_fidelity.h"
 #include "processing/motion/resample.h"
 #include "processing/retargeting/retarget_scene.h"
 #include "processing/sketch_fill/sketch_keys.h"
-#include "processing/synthesis/fill.h"
 
 namespace mocapfill {
 

@@ -14,9 +14,10 @@
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
 #include "processing/database/motion_database.h"
+#include "processing/fill/fill_options.h"
+#include "processing/fill/fill_report.h"
 #include "processing/motion/foot_plant.h"
 #include "processing/retargeting/rest_pose.h"
-#include "processing/synthesis/fill_options.h"
 
 namespace mocapfill {
 

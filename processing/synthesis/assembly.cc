@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "processing/filtering/pyramid.h"
-
 namespace mocapfill {
 
 namespace {
@@ -100,61 +98,6 @@ void SmoothSeams(Eigen::MatrixXd& out, const std::vector<int>& channels, const s
         if (b - 1 - d >= 0) out(b - 1 - d, c) += 0.5 * jump * fall;
         if (b + d < rows) out(b + d, c) -= 0.5 * jump * fall;
       }
-    }
-  }
-}
-
-int TextureBandCount(int key_spacing, double rate_hz) {
-  const double nyquist = rate_hz / (2.0 * std::max(1, key_spacing));
-  int count = 0;
-  while (count < 16 && BandPeakHz(count, rate_hz) > nyquist) ++count;
-  return count;
-}
-
-void TextureChannels(const Eigen::MatrixXd& sketch, const Eigen::MatrixXd& source, const std::vector<int>& channels,
-                     int texture_bands, double rate_hz, Eigen::MatrixXd& out) {
-  if (texture_bands < 1 || channels.empty() || sketch.rows() < 2) return;
-  Eigen::MatrixXd a(sketch.rows(), channels.size()), b(source.rows(), channels.size());
-  for (size_t i = 0; i < channels.size(); ++i) {
-    a.col(i) = sketch.col(channels[i]);
-    b.col(i) = source.col(channels[i]);
-  }
-  PyramidOptions options;
-  options.levels = texture_bands;
-  Result<Pyramid> pa = BuildPyramid(a, rate_hz, options);
-  Result<Pyramid> pb = BuildPyramid(b, rate_hz, options);
-  if (!pa.ok() || !pb.ok()) return;
-  const Eigen::MatrixXd textured = pa->residual + (b - pb->residual);  // G_kt(sketch) + high bands(source)
-  for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = textured.col(i);
-}
-
-void RepinKeys(const SketchSignals& sketch, const std::vector<int>& channels, Eigen::MatrixXd& out) {
-  const int rows = static_cast<int>(out.rows());
-  for (int c : channels) {
-    const std::vector<int>& keys = sketch.key_frames[c];
-    if (keys.empty()) continue;
-    std::vector<double> d(keys.size());
-    for (size_t k = 0; k < keys.size(); ++k) d[k] = out(keys[k], c) - sketch.values(keys[k], c);
-    // Catmull-Rom slopes through (key, offset) pairs, one-sided at the ends.
-    std::vector<double> m(keys.size(), 0.0);
-    for (size_t k = 0; k < keys.size(); ++k) {
-      const size_t lo = k == 0 ? 0 : k - 1, hi = std::min(keys.size() - 1, k + 1);
-      if (hi > lo) m[k] = (d[hi] - d[lo]) / (keys[hi] - keys[lo]);
-    }
-    for (int f = 0; f < rows; ++f) {
-      double offset;
-      if (f <= keys.front()) {
-        offset = d.front();
-      } else if (f >= keys.back()) {
-        offset = d.back();
-      } else {
-        const size_t k = std::upper_bound(keys.begin(), keys.end(), f) - keys.begin() - 1;
-        const double h = keys[k + 1] - keys[k], u = (f - keys[k]) / h;
-        const double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u;
-        const double h01 = -2 * u * u * u + 3 * u * u, h11 = u * u * u - u * u;
-        offset = h00 * d[k] + h10 * h * m[k] + h01 * d[k + 1] + h11 * h * m[k + 1];
-      }
-      out(f, c) -= offset;
     }
   }
 }

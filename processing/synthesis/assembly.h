@@ -1,5 +1,6 @@
-// Assembly of the synthesised channels from the chosen database fragments, seam smoothing,
-// texturing of keyed channels and re-pinning of keys (algorithms.md 3a.5-3a.7).
+// Assembly of the synthesised channels from the chosen database fragments and seam smoothing
+// (algorithms.md 3a.5). Texturing and re-pinning of keys, which follow, are in
+// processing/texturing.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,7 +9,6 @@
 #include "processing/database/motion_database.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/matching_database.h"
-#include "processing/synthesis/sketch_signals.h"
 
 namespace mocapfill {
 
@@ -37,19 +37,5 @@ std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& ou
 // half of each adjoining fragment), so values and slopes meet.
 void SmoothSeams(Eigen::MatrixXd& out, const std::vector<int>& channels, const std::vector<SketchFragment>& fragments,
                  int window_frames);
-
-// Number of Laplacian bands above the keys' Nyquist rate (texture bands, algorithms.md 3a.1):
-// bands whose peak exceeds rate_hz / (2 * key_spacing). At 30 Hz with keys every 8 frames: 3.
-int TextureBandCount(int key_spacing, double rate_hz);
-
-// Texturing: keyed channel a becomes G_kt(sketch) + sum_{k < kt} L_k(source), pyramids over
-// the whole clip. `source` holds the assembled lead candidates' signals of those channels.
-void TextureChannels(const Eigen::MatrixXd& sketch, const Eigen::MatrixXd& source, const std::vector<int>& channels,
-                     int texture_bands, double rate_hz, Eigen::MatrixXd& out);
-
-// Re-pinning (motion displacement map): subtracts from each channel the cubic interpolation
-// (Catmull-Rom through the keys) of its offsets from the sketch at its key frames, so the keys
-// hold exactly and the change fades smoothly in between.
-void RepinKeys(const SketchSignals& sketch, const std::vector<int>& channels, Eigen::MatrixXd& out);
 
 }  // namespace mocapfill

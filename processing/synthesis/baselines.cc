@@ -18,7 +18,7 @@ Eigen::VectorXf ChannelSigma(const MotionDatabase& db) {
   return sigma.cwiseMax(1e-6f);
 }
 
-std::vector<int> FillNearest(const MotionDatabase& db, const SketchSignals& sketch, const FillOptions& options,
+std::vector<int> FillNearest(const MotionDatabase& db, const SketchSignals& sketch, const FragmentFillOptions& options,
                              Eigen::MatrixXd& out) {
   std::vector<int> keyed, unkeyed;
   for (int c = 0; c < sketch.num_channels(); ++c) (sketch.keyed[c] ? keyed : unkeyed).push_back(c);

@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 
 #include "processing/database/motion_database.h"
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/sketch_signals.h"
 
 namespace mocapfill {
@@ -18,7 +18,7 @@ void FillMean(const SketchSignals& sketch, Eigen::MatrixXd& out);
 // For every key frame, finds the database frame nearest in the keyed channels (normalised by
 // each channel's database standard deviation) and copies its unkeyed channels; interpolates
 // linearly between key frames. Returns the database rows used (one per key frame).
-std::vector<int> FillNearest(const MotionDatabase& db, const SketchSignals& sketch, const FillOptions& options,
+std::vector<int> FillNearest(const MotionDatabase& db, const SketchSignals& sketch, const FragmentFillOptions& options,
                              Eigen::MatrixXd& out);
 
 // Standard deviation of every database channel (>= 1e-6), float.

@@ -16,7 +16,7 @@ double Ramp(double share, double from, double to) {
 }  // namespace
 
 double ReferenceDistance(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven,
-                         const FillOptions& options) {
+                         const FragmentFillOptions& options) {
   const int n = static_cast<int>(mdb.fragments().size());
   if (n == 0 || driven.empty()) return 0.0;
   const int stride = std::max(1, (n + options.coverage.reference_fragments - 1) / options.coverage.reference_fragments);

@@ -11,7 +11,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_options.h"
+#include "processing/synthesis/fragment_fill_report.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/matching_database.h"
 
@@ -21,7 +22,7 @@ namespace mocapfill {
 // database's fragments (options.coverage.reference_fragments) to their nearest admissible
 // fragment of another clip, on the driven channels. 0 when no fragment has one (one clip).
 double ReferenceDistance(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven,
-                         const FillOptions& options);
+                         const FragmentFillOptions& options);
 
 // Per sketch fragment: the squared distance of its nearest candidate (`nearest[f]`
 // ascending, as MatchFragments returns), its share of `energies[f]` (FragmentEnergies), its

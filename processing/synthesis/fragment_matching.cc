@@ -51,7 +51,7 @@ Eigen::MatrixXf ScaledDatabase(const MatchingDatabase& mdb, const Scaling& scali
 
 Eigen::MatrixXf ScaledQueries(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                               const std::vector<SketchFragment>& fragments, const Scaling& scaling,
-                              const FillOptions& options) {
+                              const FragmentFillOptions& options) {
   const int samples = mdb.samples();
   const int nd = static_cast<int>(scaling.columns.size());
   const Eigen::MatrixXf sketch_f = sketch_match.cast<float>();
@@ -69,12 +69,12 @@ Eigen::MatrixXf ScaledQueries(const MatchingDatabase& mdb, const Eigen::MatrixXd
 
 ScaledProblem Scale(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                     const std::vector<SketchFragment>& fragments, const std::vector<DrivenChannel>& driven,
-                    const FillOptions& options) {
+                    const FragmentFillOptions& options) {
   const Scaling scaling = ScalingOf(mdb, driven);
   return {ScaledQueries(mdb, sketch_match, fragments, scaling, options), ScaledDatabase(mdb, scaling)};
 }
 
-bool Admissible(const SketchFragment& query, const DbFragment& db, const FillOptions& options) {
+bool Admissible(const SketchFragment& query, const DbFragment& db, const FragmentFillOptions& options) {
   if (query.rising != db.rising) return false;
   const double ratio = double(std::max(1, db.last - db.first)) / std::max(1, query.last - query.first);
   return ratio >= options.min_length_ratio && ratio <= options.max_length_ratio;
@@ -134,7 +134,7 @@ int ChooseMasterChannel(const SketchSignals& sketch, int band, double rate_hz) {
 std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                                                    const std::vector<SketchFragment>& fragments,
                                                    const std::vector<DrivenChannel>& driven,
-                                                   const FillOptions& options) {
+                                                   const FragmentFillOptions& options) {
   const ScaledProblem p = Scale(mdb, sketch_match, fragments, driven, options);
   const Eigen::VectorXf db_norms = p.database.rowwise().squaredNorm();
   const Eigen::VectorXf query_norms = p.queries.rowwise().squaredNorm();
@@ -161,14 +161,16 @@ std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, 
 
 std::vector<float> FragmentEnergies(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                                     const std::vector<SketchFragment>& fragments,
-                                    const std::vector<DrivenChannel>& driven, const FillOptions& options) {
+                                    const std::vector<DrivenChannel>& driven, const FragmentFillOptions& options) {
   const Eigen::VectorXf norms =
       ScaledQueries(mdb, sketch_match, fragments, ScalingOf(mdb, driven), options).rowwise().squaredNorm();
   return std::vector<float>(norms.data(), norms.data() + norms.size());
 }
 
-std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb, const std::vector<int>& queries,
-                                             const std::vector<DrivenChannel>& driven, const FillOptions& options) {
+std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb,
+                                             const std::vector<int>& queries,
+                                             const std::vector<DrivenChannel>& driven,
+                                             const FragmentFillOptions& options) {
   const Eigen::MatrixXf database = ScaledDatabase(mdb, ScalingOf(mdb, driven));
   const Eigen::VectorXf norms = database.rowwise().squaredNorm();
   const std::vector<DbFragment>& all = mdb.fragments();

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "processing/core/status.h"
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"
 
@@ -49,19 +49,21 @@ int ChooseMasterChannel(const SketchSignals& sketch, int band, double rate_hz);
 std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                                                    const std::vector<SketchFragment>& fragments,
                                                    const std::vector<DrivenChannel>& driven,
-                                                   const FillOptions& options);
+                                                   const FragmentFillOptions& options);
 
 // Per sketch fragment: its distance (as MatchFragments measures it) to the database mean
 // pose standing still, the all-zero matching signal: how much there is to explain.
 std::vector<float> FragmentEnergies(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                                     const std::vector<SketchFragment>& fragments,
-                                    const std::vector<DrivenChannel>& driven, const FillOptions& options);
+                                    const std::vector<DrivenChannel>& driven, const FragmentFillOptions& options);
 
 // For each listed database fragment (indices into MatchingDatabase::fragments()), the
 // distance to its nearest admissible fragment of another clip on the driven channels: how
 // near the database's own takes come to one another, the yardstick of coverage. Infinity
 // where no other clip has an admissible fragment.
-std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb, const std::vector<int>& queries,
-                                             const std::vector<DrivenChannel>& driven, const FillOptions& options);
+std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb,
+                                             const std::vector<int>& queries,
+                                             const std::vector<DrivenChannel>& driven,
+                                             const FragmentFillOptions& options);
 
 }  // namespace mocapfill

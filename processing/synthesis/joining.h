@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "processing/database/motion_database.h"
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/matching_database.h"
 

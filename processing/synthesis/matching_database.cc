@@ -65,7 +65,7 @@ void MatchingWindow(int first, int last, double context_fraction, double& window
   window_last = last + extra;
 }
 
-Eigen::MatrixXd MatchingSignal(const Eigen::MatrixXd& block, double rate_hz, const FillOptions& options) {
+Eigen::MatrixXd MatchingSignal(const Eigen::MatrixXd& block, double rate_hz, const FragmentFillOptions& options) {
   if (options.match_signal == MatchSignal::kLowPass || block.rows() < 2) return block;
   const int band = BandForFrequency(options.match_band_hz, rate_hz, 16);
   PyramidOptions pyramid;
@@ -87,15 +87,18 @@ Eigen::VectorXd BandOf(const Eigen::VectorXd& channel, double rate_hz, int band)
 int MatchingDatabase::Row(int clip, int frame) const { return clip_first_[clip] + frame; }
 
 bool MatchingDatabase::Serves(const SketchSignals& sketch, int master_channel, int fragment_band,
-                              const FillOptions& options) const {
+                              const FragmentFillOptions& options) const {
   return keyed_ == sketch.keyed && spacing_ == sketch.key_spacing && master_ == master_channel &&
          band_ == fragment_band && phases_ == options.db_phases && signal_ == options.match_signal &&
          samples_ == options.match_samples && match_band_hz_ == options.match_band_hz &&
          context_ == options.context_fraction;
 }
 
-Result<MatchingDatabase> MatchingDatabase::Build(const MotionDatabase& db, const SketchSignals& sketch,
-                                                 int master_channel, int fragment_band, const FillOptions& options) {
+Result<MatchingDatabase> MatchingDatabase::Build(const MotionDatabase& db,
+                                                 const SketchSignals& sketch,
+                                                 int master_channel,
+                                                 int fragment_band,
+                                                 const FragmentFillOptions& options) {
   if (db.num_clips() == 0) return InvalidData("the database has no clips");
   MatchingDatabase m;
   m.keyed_ = sketch.keyed;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "processing/database/motion_database.h"
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/sketch_signals.h"
 
 namespace mocapfill {
@@ -41,10 +41,13 @@ class MatchingDatabase {
   // on `master_channel`'s band `fragment_band`, and samples every fragment's matching signal.
   // Errors: a database without clips (kInvalidData).
   static Result<MatchingDatabase> Build(const MotionDatabase& db, const SketchSignals& sketch, int master_channel,
-                                        int fragment_band, const FillOptions& options);
+                                        int fragment_band, const FragmentFillOptions& options);
 
   // Whether this copy serves a sketch (same keyed channels, spacing, master, band, options).
-  bool Serves(const SketchSignals& sketch, int master_channel, int fragment_band, const FillOptions& options) const;
+  bool Serves(const SketchSignals& sketch,
+              int master_channel,
+              int fragment_band,
+              const FragmentFillOptions& options) const;
 
   const std::vector<DbFragment>& fragments() const { return fragments_; }
   // fragments x (samples * channels), sample-major per row: the matching signal of every
@@ -71,7 +74,7 @@ class MatchingDatabase {
 
 // The matching signal of a clip-long block of channels: the block itself (kLowPass) or its
 // Laplacian band nearest options.match_band_hz (kBand), pyramid on the whole block.
-Eigen::MatrixXd MatchingSignal(const Eigen::MatrixXd& block, double rate_hz, const FillOptions& options);
+Eigen::MatrixXd MatchingSignal(const Eigen::MatrixXd& block, double rate_hz, const FragmentFillOptions& options);
 
 // Laplacian band `band` of one channel (pyramid with band + 1 levels, clamped ends).
 Eigen::VectorXd BandOf(const Eigen::VectorXd& channel, double rate_hz, int band);

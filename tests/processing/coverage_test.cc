@@ -11,9 +11,9 @@
 #include "processing/core/rotation.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "processing/fill/fill_engine.h"
 #include "processing/sketch_fill/sketch_fill.h"
 #include "processing/synthesis/coverage.h"
-#include "processing/synthesis/fill.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 

@@ -8,10 +8,10 @@
 #include "processing/core/rotation.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
-#include "processing/synthesis/assembly.h"
-#include "processing/synthesis/fill.h"
+#include "processing/fill/fill_engine.h"
 #include "processing/synthesis/hierarchy.h"
 #include "processing/synthesis/sketch_signals.h"
+#include "processing/texturing/texture_channels.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 

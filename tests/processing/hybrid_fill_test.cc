@@ -13,9 +13,9 @@
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
 #include "processing/evaluation/metrics.h"
+#include "processing/fill/fill_engine.h"
+#include "processing/hybrid/hybrid_fill.h"
 #include "processing/pca/pca_model_builder.h"
-#include "processing/synthesis/fill.h"
-#include "processing/synthesis/hybrid_fill.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
@@ -176,7 +176,9 @@ TEST(HybridFill, GivenModelIsUsedAndBuiltModelGivesTheSameResult) {
   const MotionClip sketch = Sketch();
   Result<PcaModel> model = BuildPcaModel(DefaultDb(), {});
   ASSERT_TRUE(model.ok());
-  Result<FillResult> given = HybridFill(DefaultDb(), sketch, &*model, Hybrid());
+  FillEngine given_engine(DefaultDb());
+  given_engine.SetPcaModel(&*model);
+  Result<FillResult> given = given_engine.Fill(sketch, Hybrid());
   FillEngine engine(DefaultDb());
   Result<FillResult> built = engine.Fill(sketch, Hybrid());
   ASSERT_TRUE(given.ok() && built.ok()) << given.status().message();
@@ -250,7 +252,10 @@ TEST(HybridFill, RejectsAModelThatDoesNotFitTheDatabaseSkeleton) {
   Result<PcaModel> model = BuildPcaModel(DefaultDb(), {});
   ASSERT_TRUE(model.ok());
   model->joint_names[3] = "NoSuchJoint";
-  Result<FillResult> r = HybridFill(DefaultDb(), Sketch(), &*model, Hybrid());
+  FragmentFillEngine fragments(DefaultDb());
+  const FillOptions options = Hybrid();
+  FragmentFillReport report;
+  Result<HybridResult> r = HybridFill(fragments, *model, Sketch(), options, options.pca, {}, report);
   EXPECT_EQ(r.status().code(), ErrorCode::kInvalidArgument);
   EXPECT_NE(r.status().message().find("NoSuchJoint"), std::string::npos) << r.status().message();
 }

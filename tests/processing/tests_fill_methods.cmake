@@ -2,14 +2,15 @@
 mocapfill_add_test(fill_tests
   CORPUS [=[^Fill\.HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc
-  LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_synthesis mocapfill_formats)
+  LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_fill mocapfill_synthesis mocapfill_texturing
+       mocapfill_formats)
 
 # PCA-based fill methods: `pca` (closed form) and `hybrid`.
 mocapfill_add_test(hybrid_fill_tests
   SLOW [=[^HybridFill\.FootPositionKeysHoldWithinACentimetre$]=]
   CORPUS [=[^HybridFill\.CapturedWalkOfAnUnseenStyleBeatsTheMeanPose$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/hybrid_fill_test.cc
-  LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_synthesis mocapfill_pca mocapfill_formats)
+  LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_fill mocapfill_hybrid mocapfill_pca mocapfill_formats)
 
 # Leave-one-style-out over the shared corpus's walks: hybrid against hierarchical (skips visibly
 # without ../shared/data).
@@ -23,4 +24,5 @@ mocapfill_add_test(hybrid_loso_tests
 mocapfill_add_test(coverage_tests
   CORPUS [=[^Coverage\.(DanceAgainstTheDefaultDatabaseWarnsAndIsNoWorseThanMean|CapturedWalkOfAnotherStyleIsCovered)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/coverage_test.cc
-  LIBS mocapfill_test_default_db mocapfill_sketch_fill mocapfill_evaluation mocapfill_synthesis mocapfill_formats)
+  LIBS mocapfill_test_default_db mocapfill_sketch_fill mocapfill_evaluation mocapfill_fill mocapfill_synthesis
+       mocapfill_formats)

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "processing/core/status.h"
+#include "processing/fill/fill_options.h"
 #include "processing/graph/node.h"
 #include "processing/sketch_fill/sketch_fill.h"
-#include "processing/synthesis/fill_options.h"
 
 namespace mocapfill::graph {
 

@@ -1,16 +1,16 @@
 // texture: gives a keyframed sketch the high-frequency detail of a captured (or filled)
-// motion (Pullen and Bregler's texturing; processing/synthesis/assembly.h TextureChannels):
-// each chosen channel becomes the sketch's smooth bands plus the source's bands above the
-// keys' Nyquist rate. Both motions are decomposed about the sketch's mean rotations so the
-// channels agree; the keys are then re-pinned (RepinKeys), as the fill's texturing stage
-// does.
+// motion (Pullen and Bregler's texturing; processing/texturing/texture_channels.h
+// TextureChannels): each chosen channel becomes the sketch's smooth bands plus the source's
+// bands above the keys' Nyquist rate. Both motions are decomposed about the sketch's mean
+// rotations so the channels agree; the keys are then re-pinned (RepinKeys), as the fill's
+// texturing stage does.
 #include <algorithm>
 
 #include "processing/graph/nodes/node_support.h"
 #include "processing/graph/nodes/nodes.h"
 #include "processing/motion/tangent_space.h"
-#include "processing/synthesis/assembly.h"
-#include "processing/synthesis/sketch_signals.h"
+#include "processing/texturing/repin_keys.h"
+#include "processing/texturing/texture_channels.h"
 
 namespace mocapfill::graph {
 
@@ -38,16 +38,12 @@ MotionClip Slice(const MotionClip& clip, int start, int frames) {
   return out;
 }
 
-// The sketch's tangent channels with each joint's rotation key frames, as RepinKeys reads them.
-SketchSignals KeysOf(const MotionClip& sketch, const Eigen::MatrixXd& tangent) {
-  SketchSignals keys;
-  keys.frames = sketch.num_frames;
-  keys.num_joints = sketch.num_joints;
-  keys.values = tangent;
-  keys.key_frames.resize(tangent.cols());
+// Key frames of every tangent channel: its joint's rotation key frames, as RepinKeys reads them.
+std::vector<std::vector<int>> KeyFramesOf(const MotionClip& sketch) {
+  std::vector<std::vector<int>> key_frames(3 * static_cast<size_t>(sketch.num_joints));
   for (int j = 0; j < sketch.num_joints; ++j)
-    for (int axis = 0; axis < 3; ++axis) keys.key_frames[TangentColumn(j, axis)] = sketch.keys[j].rotation_frames;
-  return keys;
+    for (int axis = 0; axis < 3; ++axis) key_frames[TangentColumn(j, axis)] = sketch.keys[j].rotation_frames;
+  return key_frames;
 }
 
 class TextureNode : public Node {
@@ -82,7 +78,7 @@ class TextureNode : public Node {
     const ClipSignals detail = DecomposeClip(skeleton, source, reference);
     Eigen::MatrixXd out = signals.tangent;
     TextureChannels(signals.tangent, detail.tangent, channels, bands, sketch->sample_rate_hz, out);
-    if (repin_) RepinKeys(KeysOf(*sketch, signals.tangent), channels, out);
+    if (repin_) RepinKeys(signals.tangent, KeyFramesOf(*sketch), channels, out);
     signals.tangent = std::move(out);
     ASSIGN_OR_RETURN(MotionClip textured, ComposeClip(skeleton, signals, reference, *sketch));
     return WithClip(sketch_scene, std::move(textured));

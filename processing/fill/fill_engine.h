@@ -1,7 +1,9 @@
-// The fill stage (issue #4): completes a sketch (keyed joints plus missing ones) from a motion
-// database with one of the methods of FillOptions, and reports where everything came from.
-// The sketch must already be on the database's rig and at its rate (sketch_fill/ brings a
-// sketch on any rig there).
+// The fill stage (issues #4, #5): completes a sketch (keyed joints plus missing ones) from a
+// motion database with any method of FillOptions, by name, and reports where everything came
+// from. The methods live in their own folders: the fragment methods and baselines in
+// processing/synthesis, the hybrid in processing/hybrid, the PCA model and its fits in
+// processing/pca. The sketch must already be on the database's rig and at its rate
+// (sketch_fill/ brings a sketch on any rig there).
 #pragma once
 
 #include <memory>
@@ -9,37 +11,25 @@
 
 #include "processing/core/motion_clip.h"
 #include "processing/core/pca_model.h"
+#include "processing/core/status.h"
 #include "processing/database/motion_database.h"
+#include "processing/fill/fill_options.h"
+#include "processing/fill/fill_report.h"
+#include "processing/pca/pca_model_builder.h"
 #include "processing/pca/pca_sketch.h"
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_engine.h"
 
 namespace mocapfill {
-
-class MatchingDatabase;
-
-// The coverage yardstick of a matching database (coverage.h: ReferenceDistance), the driven
-// channels and the options it was measured with; distance < 0 until measured.
-struct CoverageYardstick {
-  double distance = -1.0;
-  std::vector<int> channels;
-  double root_feature_weight = 0.0, min_length_ratio = 0.0, max_length_ratio = 0.0;
-  int reference_fragments = 0;
-
-  bool Serves(const std::vector<int>& driven_channels, const FillOptions& o) const {
-    return distance >= 0.0 && channels == driven_channels && root_feature_weight == o.root_feature_weight &&
-           min_length_ratio == o.min_length_ratio && max_length_ratio == o.max_length_ratio &&
-           reference_fragments == o.coverage.reference_fragments;
-  }
-};
 
 struct FillResult {
   MotionClip clip;   // database joint order and rate, every joint keyed at every frame
   FillReport report;
 };
 
-// Holds the database and caches its sketch-filtered copy between fills of sketches with the
-// same keyed channels and key spacing (an evaluation fills many such sketches). Not
-// thread-safe: one engine per thread; matching inside a fill uses options.threads.
+// Holds the database, caches its sketch-filtered copy between fills of sketches with the
+// same keyed channels and key spacing (an evaluation fills many such sketches) and the PCA
+// model it builds. Not thread-safe: one engine per thread; matching inside a fill uses
+// options.threads.
 class FillEngine {
  public:
   explicit FillEngine(const MotionDatabase& db);
@@ -71,8 +61,7 @@ class FillEngine {
                                 const std::vector<SketchPositionKey>& position_keys);
 
   const MotionDatabase& db_;
-  std::unique_ptr<MatchingDatabase> cache_;
-  CoverageYardstick yardstick_;  // of cache_
+  FragmentFillEngine fragments_;
   const PcaModel* given_model_ = nullptr;
   std::unique_ptr<PcaModel> built_model_;
   PcaModelOptions built_model_options_;

@@ -1,24 +1,21 @@
-#include "processing/synthesis/hybrid_fill.h"
+#include "processing/hybrid/hybrid_fill.h"
 
-#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
 
 #include "processing/filtering/motion_filter.h"
+#include "processing/motion/tangent_space.h"
 #include "processing/pca/pca_clip.h"
 #include "processing/pca/pca_edit.h"
-#include "processing/pca/pca_model_builder.h"
-#include "processing/synthesis/assembly.h"
 #include "processing/synthesis/fill_stages.h"
+#include "processing/synthesis/sketch_signals.h"
+#include "processing/texturing/repin_keys.h"
+#include "processing/texturing/texture_channels.h"
 
 namespace mocapfill {
 
 namespace {
-
-bool SameModelOptions(const PcaModelOptions& a, const PcaModelOptions& b) {
-  return a.basis.variance_kept == b.basis.variance_kept && a.basis.max_components == b.basis.max_components &&
-         a.basis.window_frames == b.basis.window_frames &&
-         a.basis.window_stride_frames == b.basis.window_stride_frames && a.labels == b.labels &&
-         a.root_rate_horizon_s == b.root_rate_horizon_s;
-}
 
 Status CheckClip(const MotionDatabase& db, const MotionClip& sketch, const MotionClip& clip, const char* what) {
   RETURN_IF_ERROR(clip.Validate(db.skeleton()).WithContext(what));
@@ -47,7 +44,7 @@ std::vector<int> Channels(const std::vector<int>& joints) {
 
 // The fragment fill's report becomes the hybrid's (sources, seams, groups); its stages are
 // listed under "fragments.<stage>".
-void TakeFragmentReport(const FillReport& from, FillReport& to) {
+void TakeFragmentReport(const FragmentFillReport& from, FragmentFillReport& to) {
   to.master_channel = from.master_channel;
   to.fragment_band = from.fragment_band;
   to.sketch_fragments = from.sketch_fragments;
@@ -57,89 +54,49 @@ void TakeFragmentReport(const FillReport& from, FillReport& to) {
   for (const StageTime& t : from.stages) to.stages.push_back({"fragments." + t.stage, t.seconds});
 }
 
-void StartReport(const MotionDatabase& db, const MotionClip& sketch, const FillOptions& options, FillReport& report) {
-  report.method = FillMethodName(options.method);
-  report.join = options.method == FillMethod::kHybrid ? JoinCriterionName(options.join) : "none";
-  report.frames = sketch.num_frames;
-  report.rate_hz = db.rate_hz();
-}
-
 }  // namespace
 
-Result<const PcaModel*> FillEngine::Model(const FillOptions& options, FillReport& report) {
-  if (given_model_ != nullptr) {
-    report.pca_model_source = "given";
-  } else {
-    if (!built_model_ || !SameModelOptions(built_model_options_, options.pca.model)) {
-      ASSIGN_OR_RETURN(PcaModel model, BuildPcaModel(db_, options.pca.model));
-      built_model_ = std::make_unique<PcaModel>(std::move(model));
-      built_model_options_ = options.pca.model;
-    }
-    report.pca_model_source = "built from the database";
-  }
-  const PcaModel* model = given_model_ != nullptr ? given_model_ : built_model_.get();
-  report.pca_components = model->num_components();
-  return model;
-}
-
-Result<FillResult> FillEngine::FillPca(const MotionClip& sketch, const FillOptions& options) {
-  FillResult result;
-  FillReport& report = result.report;
-  StartReport(db_, sketch, options, report);
+Result<HybridResult> HybridFill(FragmentFillEngine& fragments, const PcaModel& model, const MotionClip& sketch,
+                                const FragmentFillOptions& options, const PcaMethodOptions& pca,
+                                const std::vector<SketchPositionKey>& position_keys, FragmentFillReport& report) {
+  RETURN_IF_ERROR(pca.Validate().WithContext("pca"));
+  const MotionDatabase& db = fragments.db();
+  report.method = FillMethodName(FillMethod::kHybrid);
+  report.join = JoinCriterionName(options.join);
+  report.frames = sketch.num_frames;
+  report.rate_hz = db.rate_hz();
   StageTimer timer(report);
-  ASSIGN_OR_RETURN(const PcaModel* model, Model(options, report));
-  timer.Mark("pca_model");
-  ASSIGN_OR_RETURN(const SketchSignals s, MakeSketchSignals(db_, sketch));
-  report.key_spacing_frames = s.key_spacing;
-  timer.Mark("prepare");
-  PcaFillOptions fill;
-  fill.closed_form = options.pca.closed_form;
-  ASSIGN_OR_RETURN(result.clip, FillMissingJointsPca(*model, db_.skeleton(), sketch, fill));
-  result.clip.MakeContinuous();
-  result.clip.KeyAllFrames();
-  timer.Mark("closed_form");
-  ReportJoints(db_, s, sketch, result.clip, false, report);
-  timer.Mark("report");
-  return result;
-}
-
-Result<FillResult> FillEngine::FillHybrid(const MotionClip& sketch, const FillOptions& options,
-                                          const std::vector<SketchPositionKey>& position_keys) {
-  FillResult result;
-  FillReport& report = result.report;
-  StartReport(db_, sketch, options, report);
-  StageTimer timer(report);
-  ASSIGN_OR_RETURN(const PcaModel* model, Model(options, report));
-  timer.Mark("pca_model");
   // 1. Hierarchical fragments (their own texture adds the lead candidates' high bands to the
   // keyed joints, which stage 3 passes on).
-  FillOptions fragment_options = options;
+  FragmentFillOptions fragment_options = options;
   fragment_options.method = FillMethod::kHierarchical;
-  ASSIGN_OR_RETURN(const FillResult fragments, Fill(sketch, fragment_options));
-  TakeFragmentReport(fragments.report, report);
-  report.key_spacing_frames = fragments.report.key_spacing_frames;
+  FragmentFillReport fragment_report;
+  ASSIGN_OR_RETURN(const MotionClip fragment_clip, fragments.Fill(sketch, fragment_options, fragment_report));
+  TakeFragmentReport(fragment_report, report);
+  report.key_spacing_frames = fragment_report.key_spacing_frames;
   timer.Mark("fragments");
   // 2. The Ceres fit to the keys, guided towards the fragments on the unkeyed joints.
   ASSIGN_OR_RETURN(const PcaSketchFit fitted,
-                   FitSketchToKeys(*model, db_.skeleton(), sketch, position_keys, &fragments.clip, options.pca.fit));
-  report.has_solver = true;
-  report.solver = fitted.fit.report;
+                   FitSketchToKeys(model, db.skeleton(), sketch, position_keys, &fragment_clip, pca.fit));
+  HybridResult result;
+  result.solver = fitted.fit.report;
   timer.Mark("pca_fit");
   // 3. Texture and key re-pinning.
-  ASSIGN_OR_RETURN(MotionClip clip, TextureHybrid(db_, sketch, fitted.clip, fragments.clip, options, position_keys));
+  ASSIGN_OR_RETURN(const MotionClip textured,
+                   TextureHybrid(db, sketch, fitted.clip, fragment_clip, options, pca, position_keys));
   timer.Mark("hybrid_texture");
   // 4. Optional edits.
-  ASSIGN_OR_RETURN(result.clip, EditHybrid(db_, *model, clip, options.pca));
+  ASSIGN_OR_RETURN(result.clip, EditHybrid(db, model, textured, pca));
   timer.Mark("edit");
-  ASSIGN_OR_RETURN(const SketchSignals s, MakeSketchSignals(db_, sketch));
-  ReportJoints(db_, s, sketch, result.clip, options.texture, report);
+  ASSIGN_OR_RETURN(const SketchSignals s, MakeSketchSignals(db, sketch));
+  ReportJoints(db, s, sketch, result.clip, options.texture, report);
   timer.Mark("report");
   return result;
 }
 
 Result<MotionClip> TextureHybrid(const MotionDatabase& db, const MotionClip& sketch, const MotionClip& fitted,
-                                 const MotionClip& fragments, const FillOptions& options,
-                                 const std::vector<SketchPositionKey>& position_keys) {
+                                 const MotionClip& fragments, const FragmentFillOptions& options,
+                                 const PcaMethodOptions& pca, const std::vector<SketchPositionKey>& position_keys) {
   RETURN_IF_ERROR(CheckClip(db, sketch, fitted, "fitted clip"));
   RETURN_IF_ERROR(CheckClip(db, sketch, fragments, "fragment clip"));
   ASSIGN_OR_RETURN(const SketchSignals s, MakeSketchSignals(db, sketch));
@@ -162,16 +119,16 @@ Result<MotionClip> TextureHybrid(const MotionDatabase& db, const MotionClip& ske
   for (int c : Channels(keyed_joints))
     if (!hold[c / 3]) textured_keyed.push_back(c);
   const std::vector<int> synthesized = Channels(synthesized_joints);
-  if (options.pca.keyed_base == KeyedBase::kSketch)
+  if (pca.keyed_base == KeyedBase::kSketch)
     for (int c : textured_keyed) out.col(c) = s.values.col(c);
   if (options.texture) {
     const int bands = TextureBandCount(s.key_spacing, db.rate_hz());
     TextureChannels(out, source, textured_keyed, bands, db.rate_hz(), out);
-    if (options.pca.texture_synthesized) TextureChannels(out, source, synthesized, bands, db.rate_hz(), out);
+    if (pca.texture_synthesized) TextureChannels(out, source, synthesized, bands, db.rate_hz(), out);
   }
   // Position keys win over rotation keys on their chains: re-pinning a keyed hip there would
   // move the keyed feet (measured: 1.3 cm -> 7.0 cm on the shipped sketch).
-  if (options.repin_keys) RepinKeys(s, textured_keyed, out);
+  if (options.repin_keys) RepinKeys(s.values, s.key_frames, textured_keyed, out);
   return ComposeFill(db, s, out, sketch, /*textured=*/true);
 }
 
@@ -194,15 +151,6 @@ Result<MotionClip> EditHybrid(const MotionDatabase& db, const PcaModel& model, c
     ASSIGN_OR_RETURN(out, MultiresFilter(db.skeleton(), out, filter));
   }
   return out;
-}
-
-Result<FillResult> HybridFill(const MotionDatabase& db, const MotionClip& sketch, const PcaModel* model,
-                              const FillOptions& options, const std::vector<SketchPositionKey>& position_keys) {
-  FillEngine engine(db);
-  engine.SetPcaModel(model);
-  FillOptions hybrid = options;
-  hybrid.method = FillMethod::kHybrid;
-  return engine.Fill(sketch, hybrid, position_keys);
 }
 
 }  // namespace mocapfill

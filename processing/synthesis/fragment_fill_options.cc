@@ -1,6 +1,7 @@
-#include "processing/synthesis/fill_options.h"
+#include "processing/synthesis/fragment_fill_options.h"
 
 #include <cmath>
+#include <string>
 
 namespace mocapfill {
 
@@ -12,7 +13,7 @@ Status RangeError(const char* field, double value, const char* range) {
 
 }  // namespace
 
-Status FillOptions::Validate() const {
+Status FragmentFillOptions::Validate() const {
   if (candidates < 1 || candidates > 1024) return RangeError("candidates", candidates, "[1, 1024]");
   if (blend < 1 || blend > candidates) return RangeError("blend", blend, "[1, candidates]");
   if (!(fragment_band_hz > 0.0) || !std::isfinite(fragment_band_hz))
@@ -47,20 +48,6 @@ Status FillOptions::Validate() const {
     return RangeError("coverage.texture_none_share", coverage.texture_none_share, "(texture_poor_share, 1]");
   if (coverage.reference_fragments < 8 || coverage.reference_fragments > 100000)
     return RangeError("coverage.reference_fragments", coverage.reference_fragments, "[8, 100000]");
-  return pca.Validate().WithContext("pca");
-}
-
-Status PcaMethodOptions::Validate() const {
-  RETURN_IF_ERROR(model.Validate().WithContext("model"));
-  RETURN_IF_ERROR(closed_form.Validate().WithContext("closed_form"));
-  RETURN_IF_ERROR(fit.Validate().WithContext("fit"));
-  for (size_t i = 0; i < band_gains.size(); ++i)
-    if (!(band_gains[i] >= 0.0 && band_gains[i] <= 10.0))
-      return RangeError(("band_gains[" + std::to_string(i) + "]").c_str(), band_gains[i], "[0, 10]");
-  for (const ComponentDial& d : dials)
-    if (d.component < 0 || !std::isfinite(d.sigmas))
-      return InvalidArgument("dials: component " + std::to_string(d.component) + " = " + std::to_string(d.sigmas) +
-                             " is not a valid dial");
   return OkStatus();
 }
 

@@ -1,9 +1,8 @@
-#include "processing/synthesis/fill.h"
+#include "processing/synthesis/fragment_fill_engine.h"
 
 #include <algorithm>
-#include <chrono>
+#include <cmath>
 
-#include "processing/core/rotation.h"
 #include "processing/filtering/pyramid.h"
 #include "processing/synthesis/assembly.h"
 #include "processing/synthesis/baselines.h"
@@ -14,25 +13,12 @@
 #include "processing/synthesis/joining.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"
+#include "processing/texturing/repin_keys.h"
+#include "processing/texturing/texture_channels.h"
 
 namespace mocapfill {
 
-// Per joint: 1 when the fill must not change it (keyed, or an ancestor of the motion root,
-// whose transform ComposeClip takes from the sketch).
-std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSignals& s) {
-  std::vector<std::uint8_t> fixed(db.num_joints(), 0);
-  for (int j = 0; j < db.num_joints(); ++j) fixed[j] = s.keyed[3 * j];
-  for (int p = db.root_joint() >= 0 ? db.skeleton().parent(db.root_joint()) : kNoParent; p != kNoParent;
-       p = db.skeleton().parent(p))
-    fixed[p] = 1;
-  return fixed;
-}
-
 namespace {
-
-bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s) {
-  return db.root_joint() >= 0 && s.num_channels() > 3 * db.num_joints() && s.keyed[3 * db.num_joints()];
-}
 
 std::vector<int> RootFeatureChannels(const MotionDatabase& db) {
   std::vector<int> channels;
@@ -46,7 +32,7 @@ struct FragmentContext {
   const MotionDatabase* db;
   const MatchingDatabase* mdb;
   const SketchSignals* sketch;
-  const FillOptions* options;
+  const FragmentFillOptions* options;
   std::vector<SketchFragment> fragments;
   Eigen::VectorXf sigma;
 };
@@ -78,7 +64,7 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<Driven
 }
 
 void ReportGroup(const FragmentContext& ctx, const std::string& name, const GroupResult& r, int blend,
-                 FillReport& report) {
+                 FragmentFillReport& report) {
   for (size_t i = 0; i < ctx.fragments.size(); ++i) {
     if (r.candidates[i].empty()) continue;
     const Candidate& c = r.candidates[i][r.leads[i]];
@@ -91,7 +77,8 @@ void ReportGroup(const FragmentContext& ctx, const std::string& name, const Grou
   }
 }
 
-std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const SketchSignals& s, const FillOptions& o) {
+std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const SketchSignals& s,
+                                           const FragmentFillOptions& o) {
   std::vector<DrivenChannel> driven;
   for (int c = 0; c < s.num_channels(); ++c)
     if (s.keyed[c]) driven.push_back({c, c >= 3 * db.num_joints() ? o.root_feature_weight : 1.0});
@@ -101,7 +88,7 @@ std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const Sketc
 // How well the database covers each sketch fragment, on all keyed channels (coverage.h).
 CoverageReport MeasureSketchCoverage(const FragmentContext& ctx, CoverageYardstick& yardstick) {
   const MotionDatabase& db = *ctx.db;
-  const FillOptions& options = *ctx.options;
+  const FragmentFillOptions& options = *ctx.options;
   const std::vector<DrivenChannel> driven = AllKeyedDrivers(db, *ctx.sketch, options);
   std::vector<int> channels;
   for (const DrivenChannel& d : driven) channels.push_back(d.channel);
@@ -110,7 +97,7 @@ CoverageReport MeasureSketchCoverage(const FragmentContext& ctx, CoverageYardsti
                  options.min_length_ratio,
                  options.max_length_ratio, options.coverage.reference_fragments};
   }
-  FillOptions nearest_only = options;
+  FragmentFillOptions nearest_only = options;
   nearest_only.candidates = 1;
   const Eigen::MatrixXd match = MatchingSignal(ctx.sketch->values, db.rate_hz(), options);
   const std::vector<std::vector<Candidate>> nearest =
@@ -122,7 +109,7 @@ CoverageReport MeasureSketchCoverage(const FragmentContext& ctx, CoverageYardsti
 // Blends poorly covered stretches towards the prior: synthesised channels towards the mean
 // pose or the nearest database pose, keyed ones towards the sketch (their texture fades;
 // keys stay exact, the sketch holds them), each with its own weight.
-void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const FillOptions& options,
+void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const FragmentFillOptions& options,
                        const CoverageReport& coverage, Eigen::MatrixXd& out) {
   const Eigen::VectorXd prior_weight = WeightPerFrame(coverage, &FragmentCoverage::prior_weight, s.frames);
   const Eigen::VectorXd texture_weight = WeightPerFrame(coverage, &FragmentCoverage::texture_weight, s.frames);
@@ -140,8 +127,8 @@ void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const F
 }
 
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
-                         CoverageYardstick& yardstick, const SketchSignals& s, const FillOptions& options,
-                         Eigen::MatrixXd& out, FillReport& report, StageTimer& timer) {
+                         CoverageYardstick& yardstick, const SketchSignals& s, const FragmentFillOptions& options,
+                         Eigen::MatrixXd& out, FragmentFillReport& report, StageTimer& timer) {
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -205,7 +192,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     Eigen::MatrixXd source = out;
     const GroupResult r = SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), keyed_channels, 1, source, timer);
     TextureChannels(s.values, source, keyed_channels, TextureBandCount(s.key_spacing, rate), rate, out);
-    if (options.repin_keys) RepinKeys(s, keyed_channels, out);
+    if (options.repin_keys) RepinKeys(s.values, s.key_frames, keyed_channels, out);
     timer.Mark("texture");
   }
   if (report.coverage.measured && options.coverage.blend) {
@@ -217,70 +204,17 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
 
 }  // namespace
 
-Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
-                           const MotionClip& sketch, bool textured) {
-  ClipSignals signals = s.raw;
-  signals.tangent = out.leftCols(3 * db.num_joints());
-  if (signals.root_features.cols() > 0) signals.root_features = out.rightCols(signals.root_features.cols());
-  ASSIGN_OR_RETURN(MotionClip clip, ComposeClip(db.skeleton(), signals, db.reference(), sketch));
-  const std::vector<std::uint8_t> fixed = FixedJoints(db, s);
-  for (int j = 0; j < db.num_joints(); ++j) {
-    const bool copy = (fixed[j] && !(textured && s.keyed[3 * j]));
-    const bool root_moves = j == db.root_joint() && RootFeaturesKeyed(db, s);
-    for (int f = 0; f < clip.num_frames; ++f) {
-      if (copy) clip.rotation(f, j) = sketch.rotation(f, j);
-      if (copy || root_moves) clip.translation(f, j) = sketch.translation(f, j);
-    }
-  }
-  clip.MakeContinuous();
-  clip.KeyAllFrames();
-  return clip;
-}
+FragmentFillEngine::FragmentFillEngine(const MotionDatabase& db) : db_(db) {}
+FragmentFillEngine::~FragmentFillEngine() = default;
 
-void ReportJoints(const MotionDatabase& db, const SketchSignals& s, const MotionClip& sketch, const MotionClip& out,
-                  bool textured, FillReport& report) {
-  report.joints.clear();
-  report.key_error_max_deg = 0.0;
-  double sum = 0.0;
-  long count = 0;
-  for (int j = 0; j < db.num_joints(); ++j) {
-    JointFillInfo info;
-    info.name = db.skeleton().name(j);
-    info.keys = static_cast<int>(sketch.keys[j].rotation_frames.size());
-    info.kind = s.keyed[3 * j] ? (textured ? "textured" : "keyed") : "synthesized";
-    for (int f : sketch.keys[j].rotation_frames) {
-      const double e = GeodesicAngle(sketch.rotation(f, j), out.rotation(f, j)) * kDegPerRad;
-      info.key_error_mean_deg += e;
-      info.key_error_max_deg = std::max(info.key_error_max_deg, e);
-      sum += e;
-      ++count;
-    }
-    if (info.keys) info.key_error_mean_deg /= info.keys;
-    report.key_error_max_deg = std::max(report.key_error_max_deg, info.key_error_max_deg);
-    report.joints.push_back(info);
-  }
-  report.key_error_mean_deg = count ? sum / count : 0.0;
-}
-
-FillEngine::FillEngine(const MotionDatabase& db) : db_(db) {}
-FillEngine::~FillEngine() = default;
-
-Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions& options) {
-  return Fill(sketch, options, {});
-}
-
-Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions& options,
-                                    const std::vector<SketchPositionKey>& position_keys) {
+Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const FragmentFillOptions& options,
+                                            FragmentFillReport& report) {
   RETURN_IF_ERROR(options.Validate());
-  if (sketch.num_frames < 1) return InvalidData("the sketch has no frames");
-  RETURN_IF_ERROR(RequireUniform(sketch, "fill"));
-  if (std::abs(sketch.sample_rate_hz - db_.rate_hz()) > 1e-9 * db_.rate_hz())
-    return InvalidArgument("the sketch must be resampled to the database rate first");
-  if (options.method == FillMethod::kPca) return FillPca(sketch, options);
-  if (options.method == FillMethod::kHybrid) return FillHybrid(sketch, options, position_keys);
-  if (!position_keys.empty()) return InvalidArgument("position keys need the hybrid method");
-  FillResult result;
-  FillReport& report = result.report;
+  RETURN_IF_ERROR(CheckFillSketch(db_, sketch));
+  if (options.method == FillMethod::kPca || options.method == FillMethod::kHybrid)
+    return InvalidArgument(std::string("the ") + FillMethodName(options.method) +
+                           " method needs a PCA model: FillEngine (processing/fill) runs it");
+  report = FragmentFillReport{};
   report.method = FillMethodName(options.method);
   report.join = JoinCriterionName(options.join);
   report.frames = sketch.num_frames;
@@ -300,10 +234,10 @@ Result<FillResult> FillEngine::Fill(const MotionClip& sketch, const FillOptions&
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;
-  ASSIGN_OR_RETURN(result.clip, ComposeFill(db_, s, out, sketch, textured));
-  ReportJoints(db_, s, sketch, result.clip, textured, report);
+  ASSIGN_OR_RETURN(MotionClip clip, ComposeFill(db_, s, out, sketch, textured));
+  ReportJoints(db_, s, sketch, clip, textured, report);
   timer.Mark("compose");
-  return result;
+  return clip;
 }
 
 }  // namespace mocapfill

@@ -1,0 +1,76 @@
+#include "processing/synthesis/fill_stages.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "processing/core/rotation.h"
+
+namespace mocapfill {
+
+Status CheckFillSketch(const MotionDatabase& db, const MotionClip& sketch) {
+  if (sketch.num_frames < 1) return InvalidData("the sketch has no frames");
+  RETURN_IF_ERROR(RequireUniform(sketch, "fill"));
+  if (std::abs(sketch.sample_rate_hz - db.rate_hz()) > 1e-9 * db.rate_hz())
+    return InvalidArgument("the sketch must be resampled to the database rate first");
+  return OkStatus();
+}
+
+std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSignals& s) {
+  std::vector<std::uint8_t> fixed(db.num_joints(), 0);
+  for (int j = 0; j < db.num_joints(); ++j) fixed[j] = s.keyed[3 * j];
+  for (int p = db.root_joint() >= 0 ? db.skeleton().parent(db.root_joint()) : kNoParent; p != kNoParent;
+       p = db.skeleton().parent(p))
+    fixed[p] = 1;
+  return fixed;
+}
+
+bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s) {
+  return db.root_joint() >= 0 && s.num_channels() > 3 * db.num_joints() && s.keyed[3 * db.num_joints()];
+}
+
+Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
+                               const MotionClip& sketch, bool textured) {
+  ClipSignals signals = s.raw;
+  signals.tangent = out.leftCols(3 * db.num_joints());
+  if (signals.root_features.cols() > 0) signals.root_features = out.rightCols(signals.root_features.cols());
+  ASSIGN_OR_RETURN(MotionClip clip, ComposeClip(db.skeleton(), signals, db.reference(), sketch));
+  const std::vector<std::uint8_t> fixed = FixedJoints(db, s);
+  for (int j = 0; j < db.num_joints(); ++j) {
+    const bool copy = (fixed[j] && !(textured && s.keyed[3 * j]));
+    const bool root_moves = j == db.root_joint() && RootFeaturesKeyed(db, s);
+    for (int f = 0; f < clip.num_frames; ++f) {
+      if (copy) clip.rotation(f, j) = sketch.rotation(f, j);
+      if (copy || root_moves) clip.translation(f, j) = sketch.translation(f, j);
+    }
+  }
+  clip.MakeContinuous();
+  clip.KeyAllFrames();
+  return clip;
+}
+
+void ReportJoints(const MotionDatabase& db, const SketchSignals& s, const MotionClip& sketch, const MotionClip& out,
+                  bool textured, FragmentFillReport& report) {
+  report.joints.clear();
+  report.key_error_max_deg = 0.0;
+  double sum = 0.0;
+  long count = 0;
+  for (int j = 0; j < db.num_joints(); ++j) {
+    JointFillInfo info;
+    info.name = db.skeleton().name(j);
+    info.keys = static_cast<int>(sketch.keys[j].rotation_frames.size());
+    info.kind = s.keyed[3 * j] ? (textured ? "textured" : "keyed") : "synthesized";
+    for (int f : sketch.keys[j].rotation_frames) {
+      const double e = GeodesicAngle(sketch.rotation(f, j), out.rotation(f, j)) * kDegPerRad;
+      info.key_error_mean_deg += e;
+      info.key_error_max_deg = std::max(info.key_error_max_deg, e);
+      sum += e;
+      ++count;
+    }
+    if (info.keys) info.key_error_mean_deg /= info.keys;
+    report.key_error_max_deg = std::max(report.key_error_max_deg, info.key_error_max_deg);
+    report.joints.push_back(info);
+  }
+  report.key_error_mean_deg = count ? sum / count : 0.0;
+}
+
+}  // namespace mocapfill

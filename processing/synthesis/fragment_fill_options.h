@@ -1,0 +1,97 @@
+// Options of the fragment methods and the baselines (algorithms.md sections 3, 4 and 9.3):
+// which method completes the missing joints of a sketch, and how fragments are matched, joined
+// and blended where the database covers the sketch poorly. The fill's options
+// (processing/fill/fill_options.h) add those of the PCA-based methods.
+#pragma once
+
+#include <string_view>
+
+#include "processing/core/status.h"
+
+namespace mocapfill {
+
+// Every method of the fill, so that one option names the choice: synthesis runs the first
+// four (FragmentFillEngine), the fill engine (processing/fill) the PCA-based two.
+enum class FillMethod {
+  kMean,          // B1: keyed joints as sketched, missing joints at the database mean pose
+  kNearest,       // B3: per key frame the nearest database pose in the keyed channels
+  kFragment,      // B5: fragment synthesis, all missing joints one target set (section 3)
+  kHierarchical,  // B6: fragment synthesis outward from the keyed joints (section 4)
+  kPca,           // B4: closed-form regularised PCA fit per frame (5a.6)
+  kHybrid,        // B7: hierarchical fragments, Ceres PCA fit guided by them, texture, edits (section 7)
+};
+
+// How one candidate per fragment is chosen (thesis 4.6, algorithms.md 3a.4).
+enum class JoinCriterion {
+  kBestFragment,   // the nearest candidate of every fragment (greedy)
+  kCostMatrix,     // Viterbi over candidates with transition costs at the seams
+  kBestAnimation,  // one database clip wherever it has a candidate, cost matrix elsewhere
+};
+
+// Which signal of the driven channels fragments are compared on.
+enum class MatchSignal {
+  kBand,     // the matching band L_km only (ignores constant offsets: keyframed vs captured)
+  kLowPass,  // the sketch-filtered signal itself (keeps posture offsets; captured sketches)
+};
+
+// What a poorly covered stretch is blended towards.
+enum class CoveragePrior {
+  kMean,     // the database mean pose (method `mean`)
+  kNearest,  // the database pose nearest the keys (method `nn`)
+};
+
+// Coverage of the sketch by the database (fragment methods; coverage.h). A sketch fragment's
+// score is its unexplained share: the squared distance of its nearest database fragment on
+// the keyed channels over its squared distance to the database mean pose standing still (how
+// much of the motion the best match leaves unexplained). From `poor_share` on, a stretch is
+// reported as poorly covered and its synthesised channels are blended towards the prior,
+// fully at `none_share`. The captured detail that texturing adds to keyed channels fades
+// earlier, between the texture thresholds (detail of another motion made the keyed feet of
+// standing sketches slide: docs/fill.md, Coverage).
+struct CoverageOptions {
+  bool blend = true;  // false: only report
+  CoveragePrior prior = CoveragePrior::kMean;
+  double poor_share = 0.04;
+  double none_share = 0.08;
+  double texture_poor_share = 0.02;
+  double texture_none_share = 0.04;
+  int reference_fragments = 128;  // database fragments sampled for the takes yardstick (a median)
+};
+
+struct FragmentFillOptions {
+  FillMethod method = FillMethod::kHierarchical;
+  JoinCriterion join = JoinCriterion::kCostMatrix;
+  MatchSignal match_signal = MatchSignal::kLowPass;
+  bool texture = true;      // add the chosen fragments' high bands to keyed channels
+  bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
+  int candidates = 128;     // K best candidates kept per fragment
+  int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)
+  double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
+  double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
+  int match_samples = 8;          // samples per driven channel after time-stretching
+  double context_fraction = 0.5;  // matching window extends each fragment by this share per side
+  double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
+  double max_length_ratio = 1.5;
+  double seam_window_s = 0.25;     // seam smoothing reach on each side
+  double crossfade = 1.0;          // > 0: fragments overlap by this share of their length and are cross-faded
+  double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
+  int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
+  bool root_drives = false;        // hierarchical: the keyed root's tilt always among the drivers
+  double synthesized_driver_weight = 1.0;  // weight of already synthesised drivers (keyed = 1)
+  double root_feature_weight = 1.0;        // weight of the root features among the drivers
+  int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
+  int threads = 0;     // matching threads (0 = hardware concurrency)
+  CoverageOptions coverage;
+
+  // Fails with kInvalidArgument naming the field, its value and the allowed range.
+  Status Validate() const;
+};
+
+// Names used on the command line and in reports: "mean", "nn", "fragment", "hierarchical";
+// "best-fragment", "cost-matrix", "best-animation"; "band", "lowpass"; "pca", "hybrid".
+const char* FillMethodName(FillMethod method);
+const char* JoinCriterionName(JoinCriterion join);
+Result<FillMethod> ParseFillMethod(std::string_view text);
+Result<JoinCriterion> ParseJoinCriterion(std::string_view text);
+
+}  // namespace mocapfill

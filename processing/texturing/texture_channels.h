@@ -1,0 +1,24 @@
+// Texturing (algorithms.md 3a.6): a smooth motion, such as a keyframed sketch interpolated
+// between its keys or a PCA fit, takes the high-frequency bands of a detailed one (captured or
+// synthesised) on chosen channels: the bands above the keys' Nyquist rate, which the keys
+// cannot have set. The fragment methods texture keyed channels, the hybrid every channel, the
+// graph's `texture` node the joints it is given.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace mocapfill {
+
+// Number of Laplacian bands above the keys' Nyquist rate (texture bands, algorithms.md 3a.1):
+// bands whose peak exceeds rate_hz / (2 * key_spacing). At 30 Hz with keys every 8 frames: 3.
+int TextureBandCount(int key_spacing, double rate_hz);
+
+// Channel a of `out` becomes G_kt(smooth) + sum_{k < kt} L_k(source) for every listed a, with
+// kt = texture_bands and pyramids over the whole clip; `smooth` and `source` are frames x
+// channels with the same rows. Does nothing for texture_bands < 1, no channel or fewer than
+// two frames.
+void TextureChannels(const Eigen::MatrixXd& smooth, const Eigen::MatrixXd& source, const std::vector<int>& channels,
+                     int texture_bands, double rate_hz, Eigen::MatrixXd& out);
+
+}  // namespace mocapfill
