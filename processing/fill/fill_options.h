@@ -1,4 +1,4 @@
-// Options of the fill (issue #4, #5): the fragment methods' and baselines' options plus those
+// Options of the fill: the fragment methods' and baselines' options plus those
 // of the PCA-based methods, as FillEngine, the `fill` verb and the pipeline's `fill` node take
 // them (the graph's fill schema, processing/graph/nodes/fill_schema.h, names every one).
 #pragma once

@@ -127,7 +127,7 @@ Result<MotionClip> TextureHybrid(const MotionDatabase& db, const MotionClip& ske
     if (pca.texture_synthesized) TextureChannels(out, source, synthesized, bands, db.rate_hz(), out);
   }
   // Position keys win over rotation keys on their chains: re-pinning a keyed hip there would
-  // move the keyed feet (measured: 1.3 cm -> 7.0 cm on the shipped sketch).
+  // move the keyed feet by centimetres.
   if (options.repin_keys) RepinKeys(s.values, s.key_frames, textured_keyed, out);
   return ComposeFill(db, s, out, sketch, /*textured=*/true);
 }

@@ -1,7 +1,7 @@
-// The hybrid fill method (thesis chapter 6, baseline B7; algorithms.md 7):
-//  1. hierarchical fragments (section 4);
+// The hybrid fill method (thesis chapter 6):
+//  1. hierarchical fragments (thesis 4.7);
 //  2. the Ceres PCA fit to the sketch's keys with a guide term towards the fragment result
-//     (section 6; it reconciles the independently synthesised groups with each other and with
+//     (thesis chapter 5; it reconciles the independently synthesised groups with each other and with
 //     the keys);
 //  3. texturing: the fit's low bands plus the fragment result's high bands on every channel,
 //     keys re-pinned (3a.6-3a.7; texture last so the prior does not smooth it away);

@@ -1,5 +1,5 @@
-// Options of the PCA-based fill methods, `pca` (the closed-form fit per frame, algorithms.md
-// 5a.6) and `hybrid` (algorithms.md 7): the model built when none is given, the fits, the
+// Options of the PCA-based fill methods, `pca` (the closed-form fit per frame) and `hybrid`
+// (thesis chapter 6): the model built when none is given, the fits, the
 // hybrid's texturing and its optional edits. The fill's options (processing/fill) carry them
 // as FillOptions::pca.
 #pragma once
@@ -20,21 +20,18 @@ enum class KeyedBase {
   kSketch,  // the sketch interpolated between its keys (as the hierarchical method)
 };
 
-// Options of the PCA-based methods (`pca`, `hybrid`; algorithms.md 5-7). Units in the names.
+// Options of the PCA-based methods (`pca`, `hybrid`). Units in the names.
 struct PcaMethodOptions {
   // Model built in memory from the fill database when the caller gives none (FillEngine::
-  // SetPcaModel): pose PCA, 95 % of the variance, at most 30 components (5b).
+  // SetPcaModel): pose PCA, 95 % of the variance, at most 30 components.
   PcaModelOptions model;
   ClosedFormOptions closed_form;  // `pca`: observation noise of keyed channels (1 deg)
   // `hybrid` stage 2: the Ceres fit, guided towards the fragment result. Default: the subspace
-  // variant (keys within s_key, re-pinned after texturing) with s_guide = 3 deg. Measured,
-  // leave-one-style-out on all 174 Bandai-Namco clips (docs/fill.md): locomotion upper-body
-  // MPJPE 7.172 cm (hierarchical 7.181), fit about 40 ms; s_guide 10 deg gave 7.368 cm. The
-  // full-pose variant (fit.full_pose = true: keyed joints held exactly, all others free under
-  // the PPCA prior; s_guide 10) scores better on gestures (10.92 vs 11.12 cm, NPSS 0.046 vs
-  // 0.051) but its solve takes about 0.6 s of the 1.5 s budget on the shipped 10 s sketch.
-  // s_pos = 0.1 cm: against the guide and a small model, 0.25 cm left keyed feet 1.16 cm off
-  // (shipped sketch, default database, subspace); 0.1 cm gives 0.52 cm (full-pose 0.21 cm).
+  // variant (keys within s_key, re-pinned after texturing) with s_guide = 3 deg, the best of
+  // the variants tried (docs/fill.md, "Variants tried"); the full-pose variant (fit.full_pose:
+  // keyed joints held exactly, all others free under the PPCA prior) scores better on gestures
+  // but its solve is several times slower. s_pos = 0.1 cm keeps position-keyed feet within
+  // about half a centimetre against the guide.
   PcaSketchFitOptions fit = [] {
     PcaSketchFitOptions o;
     o.fit.guide_sigma_deg = 3.0;

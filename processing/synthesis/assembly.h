@@ -1,5 +1,5 @@
 // Assembly of the synthesised channels from the chosen database fragments and seam smoothing
-// (algorithms.md 3a.5). Texturing and re-pinning of keys, which follow, are in
+// (Pullen and Bregler 2002; thesis 4.5). Texturing and re-pinning of keys, which follow, are in
 // processing/texturing.
 #pragma once
 

@@ -1,5 +1,5 @@
-// Baseline fill methods (algorithms.md 9.3): B1 "mean" keeps the sketch and puts every missing
-// joint at the database mean pose; B3 "nn" copies the missing joints, at every key frame, from
+// Baseline fill methods, the yardsticks every method is evaluated against: "mean" keeps the
+// sketch and puts every missing joint at the database mean pose; "nn" copies the missing joints, at every key frame, from
 // the database frame nearest in the keyed channels and interpolates between key frames.
 #pragma once
 

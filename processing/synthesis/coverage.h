@@ -1,4 +1,4 @@
-// Coverage of a sketch by the database (issue 15): where the nearest database fragment of a
+// Coverage of a sketch by the database: where the nearest database fragment of a
 // sketch fragment leaves much of the fragment's motion unexplained, the database does not
 // hold that motion and what the fragment methods synthesise there is a guess. Such stretches
 // are reported and their channels blended towards a safe prior (the database mean pose by

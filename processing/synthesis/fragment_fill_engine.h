@@ -1,4 +1,4 @@
-// The fragment methods and the baselines as one fill (issue #4; algorithms.md 3, 4 and 9.3):
+// The fragment methods and the baselines as one fill (thesis chapter 4):
 // completes a sketch (keyed joints plus missing ones) from a motion database with `mean`,
 // `nn`, `fragment` or `hierarchical`, and reports where everything came from. The sketch must
 // already be on the database's rig and at its rate (sketch_fill/ brings a sketch on any rig

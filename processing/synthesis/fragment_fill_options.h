@@ -1,4 +1,4 @@
-// Options of the fragment methods and the baselines (algorithms.md sections 3, 4 and 9.3):
+// Options of the fragment methods and the baselines (thesis chapter 4):
 // which method completes the missing joints of a sketch, and how fragments are matched, joined
 // and blended where the database covers the sketch poorly. The fill's options
 // (processing/fill/fill_options.h) add those of the PCA-based methods.
@@ -21,7 +21,7 @@ enum class FillMethod {
   kHybrid,        // B7: hierarchical fragments, Ceres PCA fit guided by them, texture, edits (section 7)
 };
 
-// How one candidate per fragment is chosen (thesis 4.6, algorithms.md 3a.4).
+// How one candidate per fragment is chosen (thesis 4.6).
 enum class JoinCriterion {
   kBestFragment,   // the nearest candidate of every fragment (greedy)
   kCostMatrix,     // Viterbi over candidates with transition costs at the seams

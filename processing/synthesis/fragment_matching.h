@@ -1,5 +1,5 @@
 // Fragmentation of the sketch and matching of its fragments against the database
-// (algorithms.md 3a.2-3a.3, thesis 4.3-4.4): the sketch is cut where the master channel's band
+// (thesis 4.3-4.4): the sketch is cut where the master channel's band
 // changes direction, and every sketch fragment is compared with every database fragment of
 // the same direction and a similar length, after stretching both to the same sample count.
 #pragma once
@@ -39,7 +39,7 @@ Result<std::vector<SketchFragment>> FragmentSketch(const SketchSignals& sketch, 
                                                    double rate_hz);
 
 // The keyed channel (joint tangent component) with the most energy in band `band` of the
-// densified sketch: the default master channel (algorithms.md 3a.1).
+// densified sketch: the default master channel.
 int ChooseMasterChannel(const SketchSignals& sketch, int band, double rate_hz);
 
 // The K best candidates of every sketch fragment, ascending distance; a fragment with no

@@ -1,4 +1,4 @@
-// The hierarchical fragment method's plan (thesis 4.7, algorithms.md 4a.2-4a.4): missing joints
+// The hierarchical fragment method's plan (thesis 4.7): missing joints
 // are grouped into limb chains, the groups are synthesised outward from the keyed joints in
 // skeleton order, and each group is driven by the available joints it correlates with most.
 #pragma once

@@ -80,7 +80,7 @@ std::vector<int> Viterbi(const JoinInputs& in) {
   return path;
 }
 
-// Thesis "best animation" [R]: the clip whose candidates explain the sketch best takes every
+// Thesis "best animation" (the thesis names the criterion only; this is a reconstruction): the clip whose candidates explain the sketch best takes every
 // fragment where it has a candidate; the cost-matrix path fills the rest.
 std::vector<int> BestAnimation(const JoinInputs& in) {
   const auto& cands = *in.candidates;

@@ -1,4 +1,4 @@
-// Joining (thesis 4.6, algorithms.md 3a.4): one lead candidate per sketch fragment, by one of
+// Joining (thesis 4.6): one lead candidate per sketch fragment, by one of
 // the thesis's three criteria. The cost matrix criterion solves a K x N trellis by dynamic
 // programming, charging every seam the jump of the target channels between the end of one
 // candidate and the start of the next (zero when the next continues the same take).

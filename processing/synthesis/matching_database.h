@@ -1,5 +1,5 @@
-// The database as the matcher sees it for one sketch configuration (algorithms.md 3a.1-3a.3
-// and 11): keyed channels pass through the same sketch filter as the sketch (sub-sampled at
+// The database as the matcher sees it for one sketch configuration, so that it
+// matches like with like: keyed channels pass through the same sketch filter as the sketch (sub-sampled at
 // the sketch's key spacing, at every key phase, interpolated between the keys), the result is
 // cut into fragments on the master channel's band, and every fragment's driven signals are
 // time-stretched to a fixed number of samples so that one matrix product scores a sketch

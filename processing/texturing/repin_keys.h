@@ -1,4 +1,4 @@
-// Re-pinning of keys after texturing (algorithms.md 3a.7): texturing moves a channel at its
+// Re-pinning of keys after texturing: texturing moves a channel at its
 // keys too; a motion displacement map takes the offsets back out, so every key holds exactly
 // and the change fades smoothly in between.
 #pragma once

@@ -1,4 +1,4 @@
-// Texturing (algorithms.md 3a.6): a smooth motion, such as a keyframed sketch interpolated
+// Texturing (Pullen and Bregler 2002): a smooth motion, such as a keyframed sketch interpolated
 // between its keys or a PCA fit, takes the high-frequency bands of a detailed one (captured or
 // synthesised) on chosen channels: the bands above the keys' Nyquist rate, which the keys
 // cannot have set. The fragment methods texture keyed channels, the hybrid every channel, the
@@ -10,7 +10,7 @@
 
 namespace mocapfill {
 
-// Number of Laplacian bands above the keys' Nyquist rate (texture bands, algorithms.md 3a.1):
+// Number of Laplacian bands above the keys' Nyquist rate (texture bands):
 // bands whose peak exceeds rate_hz / (2 * key_spacing). At 30 Hz with keys every 8 frames: 3.
 int TextureBandCount(int key_spacing, double rate_hz);
 
