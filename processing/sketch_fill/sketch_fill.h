@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 #include "processing/motion/foot_plant.h"
 #include "processing/retargeting/rest_pose.h"
 #include "processing/synthesis/fill_options.h"

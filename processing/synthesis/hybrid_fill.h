@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "processing/core/motion_clip.h"
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 #include "processing/pca/pca_sketch.h"
 #include "processing/synthesis/fill.h"
 #include "processing/synthesis/fill_options.h"
