@@ -10,6 +10,7 @@
 #include "formats/mfdb/mfdb_file.h"
 #include "formats/mfdb/motion_folder.h"
 #include "formats/name_map_json.h"
+#include "processing/database/motion_database_builder.h"
 #include "processing/retargeting/retarget_scene.h"
 
 #ifndef MOCAPFILL_SOURCE_DEFAULT_DB

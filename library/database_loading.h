@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "formats/motion_io.h"
+#include "processing/core/motion_database.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 
 namespace mocapfill {
 

@@ -14,6 +14,7 @@
 #include "converter/exit_codes.h"
 #include "formats/file_io.h"
 #include "formats/mfdb/mfdb_file.h"
+#include "processing/filtering/pyramid.h"
 
 namespace mocapfill::cli {
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <string_view>
 
+#include "processing/core/motion_database.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 
 namespace mocapfill {
 

@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "processing/core/motion_database.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 
 namespace mocapfill::mfdb {
 

@@ -10,9 +10,9 @@
 #include "mocapfill/error.h"
 #include "mocapfill/pca.h"
 #include "mocapfill/scene.h"
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/scene.h"
-#include "processing/database/motion_database.h"
 
 namespace mocapfill::api {
 

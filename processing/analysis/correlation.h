@@ -6,35 +6,12 @@
 
 #include <Eigen/Core>
 #include <span>
-#include <vector>
 
+#include "processing/core/correlation_table.h"
+#include "processing/core/signal_layout.h"
 #include "processing/core/status.h"
 
 namespace mocapfill {
-
-// A run of consecutive rows of one clip inside a concatenated matrix. Lagged pairs never
-// cross from one segment into the next.
-struct FrameSegment {
-  int first_row = 0;
-  int num_rows = 0;
-};
-
-struct CorrelationEntry {
-  float max_abs = 0.0f;  // max over lags of |corr|, in [0, 1]
-  float value = 0.0f;    // the signed correlation at that lag
-  int lag_frames = 0;    // tau: corr(a[t], b[t + tau]); tau > 0 means b follows a
-};
-
-struct CorrelationTable {
-  int num_channels = 0;
-  int max_lag_frames = 0;
-  int band = -1;            // Laplacian band the table was computed on (-1: raw signals)
-  double rate_hz = 0.0;     // sample rate of the signals (lag_frames / rate_hz = seconds)
-  std::vector<CorrelationEntry> entries;  // row-major, num_channels x num_channels
-
-  const CorrelationEntry& at(int a, int b) const { return entries[static_cast<size_t>(a) * num_channels + b]; }
-  bool empty() const { return entries.empty(); }
-};
 
 // Computes the table over all segments of `signals` (rows = frames, columns = channels).
 // Means and standard deviations are taken over all rows; a channel whose standard deviation

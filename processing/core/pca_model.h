@@ -9,7 +9,7 @@
 // Vector layout. A pose vector y (pose_dim entries) holds, for every joint j in model
 // order, the weighted tangent coordinates w_j * Log(Rbar_j^-1 R_j) (3 entries, radians
 // times weight), followed by num_root_features weighted root features (height, planar
-// velocity, yaw rate; see processing/motion/tangent_space.h). A window model
+// velocity, yaw rate; see processing/core/signal_layout.h). A window model
 // (window_frames = W > 1) stacks W consecutive pose vectors, oldest first, so its vectors
 // have W * pose_dim entries. Weights make squared distances approximate squared joint
 // displacements in centimetres (5a.2), which is what PCA should spend its variance on.
@@ -27,8 +27,8 @@ namespace mocapfill {
 struct PcaModel {
   // Skeleton the model describes, matched by joint name when a clip is projected.
   std::vector<std::string> joint_names;
-  // Tangent reference (processing/motion TangentReference): per joint the mean local
-  // rotation; for root_joint the mean world tilt. root_joint = -1: no root split.
+  // Tangent reference (TangentReference in processing/core/signal_layout.h): per joint the
+  // mean local rotation; for root_joint the mean world tilt. root_joint = -1: no root split.
   std::vector<Eigen::Quaterniond> joint_means;
   int root_joint = -1;
   int num_root_features = 0;      // weighted root-feature channels after the 3J tangent ones

@@ -7,8 +7,11 @@
 #include <string>
 #include <thread>
 
-#include "processing/database/motion_database.h"
+#include "processing/analysis/correlation.h"
+#include "processing/database/motion_database_builder.h"
+#include "processing/filtering/pyramid.h"
 #include "processing/motion/resample.h"
+#include "processing/motion/tangent_space.h"
 
 namespace mocapfill {
 
@@ -103,6 +106,19 @@ void ProcessClip(const Skeleton& skeleton, const MotionClip& clip, const Tangent
 }
 
 }  // namespace
+
+Status DatabaseOptions::Validate() const {
+  if (!std::isfinite(rate_hz) || rate_hz <= 0.0) return InvalidArgument("database: rate_hz must be finite and > 0");
+  for (double hz : stored_band_hz)
+    if (!std::isfinite(hz) || hz <= 0.0 || hz > 0.5 * rate_hz)
+      return InvalidArgument("database: stored_band_hz values must be in (0, rate_hz / 2]");
+  if (!std::isfinite(correlation_band_hz) || correlation_band_hz <= 0.0 || correlation_band_hz > 0.5 * rate_hz)
+    return InvalidArgument("database: correlation_band_hz must be in (0, rate_hz / 2]");
+  if (!std::isfinite(correlation_max_lag_s) || correlation_max_lag_s < 0.0 || correlation_max_lag_s > 10.0)
+    return InvalidArgument("database: correlation_max_lag_s must be in [0, 10] s");
+  if (threads < 0) return InvalidArgument("database: threads must be >= 0");
+  return OkStatus();
+}
 
 MotionDatabaseBuilder::MotionDatabaseBuilder(DatabaseOptions options) : options_(std::move(options)) {}
 

@@ -12,7 +12,7 @@
 #include "processing/core/motion_clip.h"
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
+#include "processing/database/motion_database_builder.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
 #include "processing/fill/fill_options.h"

@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "processing/core/motion_clip.h"
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/fill/fill_options.h"
 #include "processing/fill/fill_report.h"
 #include "processing/pca/pca_model_builder.h"

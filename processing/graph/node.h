@@ -12,10 +12,10 @@
 #include <variant>
 #include <vector>
 
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 #include "processing/graph/option_value.h"
 
 namespace mocapfill {

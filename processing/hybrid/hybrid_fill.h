@@ -16,7 +16,7 @@
 #include "processing/core/motion_clip.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/hybrid/pca_method_options.h"
 #include "processing/pca/pca_fit.h"
 #include "processing/pca/pca_sketch.h"

@@ -86,16 +86,6 @@ RootTrajectory ExtractRootTrajectory(const Skeleton& skeleton, const MotionClip&
   return out;
 }
 
-const char* RootFeatureName(int feature) {
-  switch (feature) {
-    case kRootHeight: return "root.height_m";
-    case kRootForward: return "root.forward_mps";
-    case kRootLateral: return "root.lateral_mps";
-    case kRootYawRate: return "root.yaw_rate_radps";
-    default: return "root.unknown";
-  }
-}
-
 Eigen::MatrixXd RootFeaturesFromTrajectory(const RootTrajectory& trajectory, double rate_hz) {
   const int frames = static_cast<int>(trajectory.position_m.size());
   Eigen::MatrixXd features = Eigen::MatrixXd::Zero(frames, kNumRootFeatures);

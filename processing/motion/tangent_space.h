@@ -9,6 +9,8 @@
 // features (height, planar velocity in the heading frame, yaw rate). Heading and planar
 // position are re-integrated from the features, so Decompose -> Compose is exact up to
 // floating-point rounding and a clip can be edited in signal space without wrapping.
+// The layout of the columns and the reference type are plain data in
+// processing/core/signal_layout.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,22 +18,13 @@
 #include <span>
 #include <vector>
 
-#include "processing/core/rotation.h"
 #include "processing/core/motion_clip.h"
+#include "processing/core/rotation.h"
+#include "processing/core/signal_layout.h"
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
 
 namespace mocapfill {
-
-// Column of joint j's tangent component `axis` (0 x, 1 y, 2 z) in a T x 3J tangent matrix.
-inline int TangentColumn(int joint, int axis) { return 3 * joint + axis; }
-
-// Reference rotations of a tangent space. joint_means[j] is the mean local rotation of
-// joint j, except for root_joint, whose entry is the mean world tilt (heading removed).
-struct TangentReference {
-  std::vector<Eigen::Quaterniond> joint_means;
-  int root_joint = -1;  // motion root; -1 = no root split (every joint is a plain local tangent)
-};
 
 // The joint that carries the character's world motion. The pelvis, i.e. the first joint (index
 // order) with two or more children, when every joint whose translation is animated in any of
@@ -55,22 +48,6 @@ struct RootTrajectory {
 
 // World trajectory of `root_joint` (its local transform composed with its ancestors').
 RootTrajectory ExtractRootTrajectory(const Skeleton& skeleton, const MotionClip& clip, int root_joint);
-
-// Columns of the heading-invariant root feature matrix (T x kNumRootFeatures).
-// Velocities are forward differences: row t describes the step from frame t to t + 1,
-// expressed in the heading frame of frame t (forward = heading frame +Z, lateral = +X);
-// the last row repeats the previous one so every frame has a row.
-enum RootFeature : int {
-  kRootHeight = 0,        // world height (Y) of the root, m
-  kRootForward = 1,       // planar velocity along the heading frame's +Z, m/s
-  kRootLateral = 2,       // planar velocity along the heading frame's +X, m/s
-  kRootYawRate = 3,       // heading change per second, rad/s
-  kNumRootFeatures = 4,
-};
-
-// Stable channel name of a root feature: "root.height_m", "root.forward_mps",
-// "root.lateral_mps", "root.yaw_rate_radps".
-const char* RootFeatureName(int feature);
 
 // Root features of a trajectory sampled at rate_hz. A one-frame trajectory has zero velocities.
 Eigen::MatrixXd RootFeaturesFromTrajectory(const RootTrajectory& trajectory, double rate_hz);

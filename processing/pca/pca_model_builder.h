@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
 #include "processing/pca/pca_basis.h"
 
 namespace mocapfill {

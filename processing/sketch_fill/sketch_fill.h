@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/scene.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/fill/fill_options.h"
 #include "processing/fill/fill_report.h"
 #include "processing/motion/foot_plant.h"

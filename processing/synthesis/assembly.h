@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/matching_database.h"
 

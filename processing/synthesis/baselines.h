@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/sketch_signals.h"
 

@@ -12,7 +12,7 @@
 
 #include "processing/core/motion_clip.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/synthesis/fragment_fill_report.h"
 #include "processing/synthesis/sketch_signals.h"
 

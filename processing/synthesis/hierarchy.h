@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/synthesis/fragment_matching.h"
 
 namespace mocapfill {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/sketch_signals.h"
 

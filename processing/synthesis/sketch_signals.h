@@ -10,8 +10,9 @@
 #include <vector>
 
 #include "processing/core/motion_clip.h"
+#include "processing/core/motion_database.h"
 #include "processing/core/status.h"
-#include "processing/database/motion_database.h"
+#include "processing/motion/tangent_space.h"
 
 namespace mocapfill {
 

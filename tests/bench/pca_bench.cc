@@ -18,6 +18,7 @@
 #include "formats/motion_io.h"
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
+#include "processing/database/motion_database_builder.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
 #include "processing/pca/closed_form_fit.h"

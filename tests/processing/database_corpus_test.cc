@@ -10,7 +10,8 @@
 #include "formats/mfdb/motion_folder.h"
 #include "formats/motion_io.h"
 #include "processing/analysis/band_energy.h"
-#include "processing/database/motion_database.h"
+#include "processing/database/motion_database_builder.h"
+#include "processing/database/stored_clips.h"
 #include "processing/filtering/motion_filter.h"
 #include "tests/processing/synthetic_motion.h"
 #include "tests/support/test_paths.h"
@@ -161,13 +162,13 @@ TEST(BandaiNamco, BuildIsDeterministicAndRoundTripsThroughAFile) {
   Result<MotionDatabase> loaded = ReadMfdb(path);
   ASSERT_TRUE(loaded.ok()) << loaded.status().message();
   for (int i = 0; i < one->num_clips(); ++i) {
-    const MotionClip a = one->ReconstructClip(i).value();
-    const MotionClip b = loaded->ReconstructClip(i).value();
+    const MotionClip a = ReconstructClip(*one, i).value();
+    const MotionClip b = ReconstructClip(*loaded, i).value();
     EXPECT_TRUE(a.rotations == b.rotations && a.translations == b.translations) << one->clip(i).name;
   }
   // The stored clip is the imported clip up to float32 storage.
   const Scene scene = Import(files[3]);
-  const MotionClip stored = loaded->ReconstructClip(3).value();
+  const MotionClip stored = ReconstructClip(*loaded, 3).value();
   EXPECT_LT(testing::MaxRotationError(scene.clips[0], stored), 1e-5);
   EXPECT_LT(testing::MaxTranslationError(scene.clips[0], stored), 1e-4);
 }

@@ -1,7 +1,8 @@
-#include "processing/database/motion_database.h"
+#include "processing/database/motion_database_builder.h"
 
 #include <gtest/gtest.h>
 
+#include "processing/database/stored_clips.h"
 #include "tests/processing/synthetic_motion.h"
 
 namespace mocapfill {
@@ -82,13 +83,13 @@ TEST(MotionDatabase, ReconstructedClipsMatchTheInputs) {
   p.duration_s = 4.0;
   p.phase_rad = 0.7;
   const MotionClip original = WalkerClip(skeleton, p);
-  Result<MotionClip> clip = db->ReconstructClip(1);
+  Result<MotionClip> clip = ReconstructClip(*db, 1);
   ASSERT_TRUE(clip.ok()) << clip.status().message();
   EXPECT_EQ(clip->name, "walk_1");
   ASSERT_EQ(clip->num_frames, original.num_frames);
   EXPECT_LT(testing::MaxRotationError(*clip, original), kStorageRad);
   EXPECT_LT(testing::MaxTranslationError(*clip, original), kStorageM);
-  EXPECT_FALSE(db->ReconstructClip(3).ok());
+  EXPECT_FALSE(ReconstructClip(*db, 3).ok());
 }
 
 TEST(MotionDatabase, BuildIsDeterministicWhateverTheThreadCount) {

@@ -4,6 +4,7 @@
 
 #include "formats/mfdb/motion_folder.h"
 #include "formats/motion_io.h"
+#include "processing/database/motion_database_builder.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill::testing {

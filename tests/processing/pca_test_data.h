@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "processing/core/motion_clip.h"
+#include "processing/core/motion_database.h"
 #include "processing/core/pca_model.h"
 #include "processing/core/scene.h"
-#include "processing/database/motion_database.h"
 
 namespace mocapfill::testing {
 

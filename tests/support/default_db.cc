@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "formats/motion_io.h"
+#include "processing/database/motion_database_builder.h"
 #include "processing/retargeting/retarget_scene.h"
 #include "tests/support/test_paths.h"
 

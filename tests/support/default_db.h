@@ -2,7 +2,7 @@
 #pragma once
 
 #include "processing/core/motion_clip.h"
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 
 namespace mocapfill::testing {
 

@@ -1,6 +1,6 @@
 // filter: multiresolution band gains on every clip of a motion (processing/filtering/
 // motion_filter.h; Bruderlin and Williams 1995), as the `filter` verb's --gains.
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 #include "processing/filtering/motion_filter.h"
 #include "processing/filtering/pyramid.h"
 #include "processing/graph/nodes/node_support.h"

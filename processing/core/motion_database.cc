@@ -1,4 +1,4 @@
-#include "processing/database/motion_database.h"
+#include "processing/core/motion_database.h"
 
 #include <cmath>
 #include <string>
@@ -18,19 +18,6 @@ Status CheckMatrix(const Eigen::MatrixXf& m, Eigen::Index rows, Eigen::Index col
 }
 
 }  // namespace
-
-Status DatabaseOptions::Validate() const {
-  if (!std::isfinite(rate_hz) || rate_hz <= 0.0) return InvalidArgument("database: rate_hz must be finite and > 0");
-  for (double hz : stored_band_hz)
-    if (!std::isfinite(hz) || hz <= 0.0 || hz > 0.5 * rate_hz)
-      return InvalidArgument("database: stored_band_hz values must be in (0, rate_hz / 2]");
-  if (!std::isfinite(correlation_band_hz) || correlation_band_hz <= 0.0 || correlation_band_hz > 0.5 * rate_hz)
-    return InvalidArgument("database: correlation_band_hz must be in (0, rate_hz / 2]");
-  if (!std::isfinite(correlation_max_lag_s) || correlation_max_lag_s < 0.0 || correlation_max_lag_s > 10.0)
-    return InvalidArgument("database: correlation_max_lag_s must be in [0, 10] s");
-  if (threads < 0) return InvalidArgument("database: threads must be >= 0");
-  return OkStatus();
-}
 
 Result<MotionDatabase> MotionDatabase::FromParts(Parts parts) {
   if (!std::isfinite(parts.rate_hz) || parts.rate_hz <= 0.0) return InvalidData("database rate is not positive");
@@ -100,34 +87,6 @@ const StoredBand* MotionDatabase::FindBand(int k) const {
   for (const StoredBand& b : parts_.bands)
     if (b.band == k) return &b;
   return nullptr;
-}
-
-ClipSignals MotionDatabase::ClipSignalsOf(int clip_index) const {
-  const ClipRange& c = parts_.clips[clip_index];
-  const Eigen::MatrixXd rows = ClipRows(parts_.signals, clip_index).cast<double>();
-  ClipSignals out;
-  out.tangent = rows.leftCols(3 * num_joints());
-  out.root_features = rows.rightCols(rows.cols() - 3 * num_joints());
-  out.start_heading_rad = c.start_heading_rad;
-  out.start_position_m = c.start_position_m;
-  return out;
-}
-
-Result<MotionClip> MotionDatabase::ReconstructClip(int clip_index) const {
-  if (clip_index < 0 || clip_index >= num_clips())
-    return InvalidArgument("database has no clip " + std::to_string(clip_index));
-  const ClipRange& c = parts_.clips[clip_index];
-  MotionClip like = MotionClip::RestPose(skeleton(), c.num_frames, rate_hz());
-  like.name = c.name;
-  for (size_t i = 0; i < parts_.translated_joints.size(); ++i) {
-    const int j = parts_.translated_joints[i];
-    like.translation_animated[j] = 1;
-    for (int f = 0; f < c.num_frames; ++f)
-      like.translation(f, j) = parts_.translations.block<1, 3>(c.first_frame + f, 3 * i).transpose().cast<double>();
-  }
-  if (root_joint() >= 0) like.translation_animated[root_joint()] = 1;
-  like.KeyAllFrames();
-  return ComposeClip(skeleton(), ClipSignalsOf(clip_index), reference(), like);
 }
 
 size_t MotionDatabase::MemoryBytes() const {

@@ -1,13 +1,18 @@
-// The motion capture database every fill method searches (algorithms.md 7, step 2): all
-// clips of one skeleton at one working rate, in signal space (tangent coordinates about the
-// database's joint means plus heading-invariant root features), with the band-pass signals
-// and the joint-correlation table precomputed. Immutable once built; built in memory by
-// MotionDatabaseBuilder, stored and loaded by formats/mfdb.
+// The motion capture database every fill method searches (algorithms.md 7, step 2), as the
+// data it stores: all clips of one skeleton at one working rate, in signal space (tangent
+// coordinates about the database's joint means plus heading-invariant root features), with
+// the band-pass signals and the joint-correlation table precomputed. Immutable once made.
+//
+// It lives in core, beside PcaModel, because both the algorithms and the .mfdb file format
+// (formats/mfdb) need it and formats may depend only on core. Computing a database is an
+// algorithm (MotionDatabaseBuilder, processing/database/motion_database_builder.h), and so is
+// turning a stored clip back into motion (processing/database/stored_clips.h).
 //
 // Channel layout (columns of signals(), of every stored band and of the correlation table):
 //   3j + a          tangent component a (0 x, 1 y, 2 z) of joint j, radians; for the motion
 //                   root joint: its tilt about the mean tilt (heading removed)
-//   3J + f          root feature f (RootFeature in tangent_space.h), when root_joint() >= 0
+//   3J + f          root feature f (RootFeature in processing/core/signal_layout.h), when
+//                   root_joint() >= 0
 // Rows: the frames of all clips concatenated in clip order (clip(i).first_frame ...).
 #pragma once
 
@@ -17,12 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "processing/analysis/correlation.h"
-#include "processing/core/motion_clip.h"
+#include "processing/core/correlation_table.h"
+#include "processing/core/signal_layout.h"
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
-#include "processing/filtering/pyramid.h"
-#include "processing/motion/tangent_space.h"
 
 namespace mocapfill {
 
@@ -45,20 +48,6 @@ struct StoredBand {
   int band = 0;          // Laplacian index k at the database rate
   double peak_hz = 0.0;  // BandPeakHz(band, rate_hz)
   Eigen::MatrixXf values;  // frames x channels
-};
-
-struct DatabaseOptions {
-  double rate_hz = 30.0;  // working rate every clip is resampled to (slerp rotations, cubic root)
-  // Bands kept in float32, chosen by frequency (nearest peak): at 30 Hz {2, 1, 0.5} Hz are
-  // L2 (step), L3 (stride: default fragmentation/matching band) and L4. Other bands are
-  // cheap to recompute per clip with BuildPyramid on ClipSignalRows().
-  std::vector<double> stored_band_hz = {2.0, 1.0, 0.5};
-  double correlation_band_hz = 1.0;    // band of the correlation table (nearest peak; L3 at 30 Hz)
-  double correlation_max_lag_s = 0.25;  // lags searched: |tau| <= round(this * rate_hz) frames
-  int threads = 0;                      // worker threads for Build (0 = hardware concurrency)
-
-  // Fails with kInvalidArgument naming the field.
-  Status Validate() const;
 };
 
 class MotionDatabase {
@@ -118,51 +107,12 @@ class MotionDatabase {
   const StoredBand* FindBand(int k) const;
   const CorrelationTable& correlation() const { return parts_.correlation; }
 
-  // One clip in signal space (double precision copy of its rows).
-  ClipSignals ClipSignalsOf(int clip_index) const;
-  // One clip as a MotionClip at rate_hz() (rotations from the tangent coordinates, root
-  // re-integrated from the features, other animated translations from storage), all frames
-  // keyed. Equal to the clip given to the builder up to float32 storage rounding.
-  Result<MotionClip> ReconstructClip(int clip_index) const;
-
   // Bytes held by the matrices (signals, translations, bands, correlation), for reports.
   size_t MemoryBytes() const;
 
  private:
   explicit MotionDatabase(Parts parts) : parts_(std::move(parts)) {}
   Parts parts_;
-};
-
-// Collects clips, then computes the database in Build().
-class MotionDatabaseBuilder {
- public:
-  explicit MotionDatabaseBuilder(DatabaseOptions options = {});
-
-  // Renames joints of added clips before matching them against the database skeleton:
-  // source joint name -> database joint name. Names not in the map are kept.
-  void SetJointNameMap(std::map<std::string, std::string> source_to_database);
-
-  // Adds one clip. The first clip's skeleton (after renaming) becomes the database's. A later
-  // clip must have the same joints with the same parents, in any order (it is re-ordered);
-  // otherwise kInvalidData naming the clip and the first differing joint, e.g.
-  // "clip 'x': joint 'Hand_L' is missing (database skeleton has it)". Rest offsets may differ
-  // (the database keeps the first skeleton's). The clip is validated and resampled to
-  // options.rate_hz here. `labels` may be empty; labels["file"] is conventionally the path.
-  Status Add(const Skeleton& skeleton, MotionClip clip, ClipLabels labels);
-
-  int num_clips() const { return static_cast<int>(clips_.size()); }
-
-  // Computes means, signals, stored bands and the correlation table. Deterministic: the same
-  // clips added in the same order give identical databases, whatever the thread count.
-  // Errors: no clips (kInvalidArgument), invalid options.
-  Result<MotionDatabase> Build() const;
-
- private:
-  DatabaseOptions options_;
-  std::map<std::string, std::string> name_map_;
-  std::optional<Skeleton> skeleton_;
-  std::vector<MotionClip> clips_;
-  std::vector<ClipLabels> labels_;
 };
 
 }  // namespace mocapfill
