@@ -14,7 +14,7 @@ mocapfill_add_test(bvh_tests
           ${CMAKE_CURRENT_LIST_DIR}/bvh_corpus_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/bvh_parallel_test.cc
   LIBS mocapfill_test_bvh mocapfill_bvh)
-# The streaming BVH-to-.glb converter against the clip path, and the direct JSON writer.
+# The streaming BVH-to-.glb converter against the clip path.
 mocapfill_add_test(bvh_glb_tests
   CORPUS [=[^BvhGlbStream\.EveryCorpusClipGivesTheClipPathsBytes$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/bvh_glb_test.cc
