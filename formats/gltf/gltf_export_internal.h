@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,26 +96,19 @@ struct GeneratedSkeleton {
 Result<GeneratedSkeleton> ExportGeneratedSkeleton(const Skeleton& skeleton, bool with_mesh, BufferWriter& buffer,
                                                   tinygltf::Model& model, std::vector<int>& scene_roots);
 
-// The JSON chunk of a .glb whose binary chunk holds `bin_bytes` bytes: the same bytes
-// tinygltf's WriteGltfSceneToStream writes (it is tinygltf's serialiser; see
-// tinygltf_impl.cc), without copying the binary buffer into the model and a stream.
-// The model must have no buffers and no images.
-std::string GlbJson(const tinygltf::Model& model, size_t bin_bytes);
+// The model WriteGltf writes for `scene`, all but its bytes, which go to `buffer`: nodes,
+// meshes and skins, animations, scene, asset.
+Status BuildExportModel(const Scene& scene, const ExportOptions& options, BufferWriter& buffer, tinygltf::Model& model);
 
-// GlbJson's text for a model of nodes, accessors, buffer views, animations, scenes and an
-// asset only (what a BVH source exports), written without tinygltf's serialiser
-// (glb_json.cc); nullopt for any other model.
-std::optional<std::string> SkeletonGlbJson(const tinygltf::Model& model, size_t bin_bytes);
-
-// tinygltf's own serialisation of the same, for everything else (and tests).
-std::string TinygltfGlbJson(const tinygltf::Model& model, size_t bin_bytes);
-
-// For tests: the JSON chunk WriteGlb makes for `scene`, written by SkeletonGlbJson (nullopt
-// when it does not handle the model) and by tinygltf's serialiser.
-struct GlbJsonPair {
-  std::optional<std::string> direct;
-  std::string tinygltf;
-};
-Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene, const ExportOptions& options = {});
+// The JSON of an exported model (gltf_json_writer.cc), laid out as tinygltf 2.7's serialiser
+// lays out the same model, so that the bytes of our files do not depend on which of the two
+// wrote them. Only the members an export fills are written; a model with others (textures,
+// cameras, extensions, sparse accessors, morph targets) is refused.
+// A .glb's JSON chunk, compact, whose binary chunk holds `bin_bytes` bytes (buffers[0]); the
+// model has no buffers (the bytes stay with the caller: BufferWriter::TakeBinaryChunk).
+Result<std::string> GlbJson(const tinygltf::Model& model, size_t bin_bytes);
+// A .gltf file's text, the model's buffers embedded as base64 data URIs, indented by two
+// spaces when `pretty`, ending in a newline.
+Result<std::string> GltfJson(const tinygltf::Model& model, bool pretty);
 
 }  // namespace mocapfill::gltf_internal

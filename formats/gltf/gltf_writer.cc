@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <sstream>
 
 #include "formats/gltf/gltf_export_internal.h"
 
@@ -246,18 +245,6 @@ Result<std::optional<gltf_internal::GeneratedSkeleton>> AddGeneratedSkeleton(con
   return std::optional<gltf_internal::GeneratedSkeleton>(generated);
 }
 
-// Everything but the buffer: nodes, meshes and skins, animations, scene, asset.
-Status BuildModel(const Scene& scene, const ExportOptions& options, BufferWriter& buffer, tinygltf::Model& model) {
-  RETURN_IF_ERROR(CheckExportable(scene));
-  AddJointNodes(scene.skeleton, model);
-  std::vector<int> roots = scene.skeleton.Roots();
-  RETURN_IF_ERROR(gltf_internal::ExportMeshes(scene, buffer, model, roots));
-  for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(AddAnimation(clip, buffer, model));
-  ASSIGN_OR_RETURN(const auto generated, AddGeneratedSkeleton(scene, options, buffer, model, roots));
-  AddSceneAndAsset(scene, std::move(roots), false, generated ? &*generated : nullptr, model);
-  return OkStatus();
-}
-
 void AppendU32(std::string& out, uint32_t v) {
   const char bytes[4] = {static_cast<char>(v), static_cast<char>(v >> 8), static_cast<char>(v >> 16),
                          static_cast<char>(v >> 24)};
@@ -291,21 +278,25 @@ Result<std::string> GlbHead(const std::string& json, size_t bin_bytes) {
 Result<GlbFile> WriteGlb(const Scene& scene, const ExportOptions& options) {
   tinygltf::Model model;
   BufferWriter buffer(model);
-  RETURN_IF_ERROR(BuildModel(scene, options, buffer, model));
+  RETURN_IF_ERROR(gltf_internal::BuildExportModel(scene, options, buffer, model));
   GlbFile file;
   file.bin = buffer.TakeBinaryChunk();  // padded to 4 bytes, so the chunk needs no padding
-  ASSIGN_OR_RETURN(file.head, GlbHead(gltf_internal::GlbJson(model, file.bin.size()), file.bin.size()));
+  ASSIGN_OR_RETURN(const std::string json, gltf_internal::GlbJson(model, file.bin.size()));
+  ASSIGN_OR_RETURN(file.head, GlbHead(json, file.bin.size()));
   return file;
 }
 
 namespace gltf_internal {
 
-Result<GlbJsonPair> GlbJsonBothWays(const Scene& scene, const ExportOptions& options) {
-  tinygltf::Model model;
-  BufferWriter buffer(model);
-  RETURN_IF_ERROR(BuildModel(scene, options, buffer, model));
-  const size_t bin_bytes = buffer.TakeBinaryChunk().size();
-  return GlbJsonPair{SkeletonGlbJson(model, bin_bytes), TinygltfGlbJson(model, bin_bytes)};
+Status BuildExportModel(const Scene& scene, const ExportOptions& options, BufferWriter& buffer, tinygltf::Model& model) {
+  RETURN_IF_ERROR(CheckExportable(scene));
+  AddJointNodes(scene.skeleton, model);
+  std::vector<int> roots = scene.skeleton.Roots();
+  RETURN_IF_ERROR(ExportMeshes(scene, buffer, model, roots));
+  for (const MotionClip& clip : scene.clips) RETURN_IF_ERROR(AddAnimation(clip, buffer, model));
+  ASSIGN_OR_RETURN(const auto generated, AddGeneratedSkeleton(scene, options, buffer, model, roots));
+  AddSceneAndAsset(scene, std::move(roots), false, generated ? &*generated : nullptr, model);
+  return OkStatus();
 }
 
 }  // namespace gltf_internal
@@ -339,7 +330,8 @@ Result<GlbFile> WriteGlbHeadForTracks(const Scene& scene, const ClipTrackLayout&
   GlbFile file;
   file.bin = buffer.TakeBinaryChunk();
   const size_t bin_bytes = track_bytes + file.bin.size();
-  ASSIGN_OR_RETURN(file.head, GlbHead(gltf_internal::GlbJson(model, bin_bytes), bin_bytes));
+  ASSIGN_OR_RETURN(const std::string json, gltf_internal::GlbJson(model, bin_bytes));
+  ASSIGN_OR_RETURN(file.head, GlbHead(json, bin_bytes));
   return file;
 }
 
@@ -354,13 +346,9 @@ Result<std::string> WriteGltf(const Scene& scene, bool binary, const ExportOptio
   }
   tinygltf::Model model;
   BufferWriter buffer(model);
-  RETURN_IF_ERROR(BuildModel(scene, options, buffer, model));
+  RETURN_IF_ERROR(gltf_internal::BuildExportModel(scene, options, buffer, model));
   buffer.Finish();
-  tinygltf::TinyGLTF writer;
-  std::ostringstream out;
-  if (!writer.WriteGltfSceneToStream(&model, out, options.pretty, false) || !out)
-    return Internal("tinygltf could not serialise the glTF model");
-  return out.str();
+  return gltf_internal::GltfJson(model, options.pretty);
 }
 
 }  // namespace mocapfill

@@ -1,7 +1,7 @@
 // The streaming BVH-to-.glb converter (formats/fast_convert/bvh_to_glb.h) against the clip path (ReadBvh then
 // WriteGlb): the same bytes for every shipped fixture and every corpus clip, on one thread
 // and on two (including hemisphere flips at the split), and the clip path's behaviour
-// wherever the import is not a plain one. Also the direct JSON writer against tinygltf's.
+// wherever the import is not a plain one.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,7 +14,6 @@
 #include "formats/fast_convert/bvh_to_glb.h"
 #include "formats/fast_convert/file_text.h"
 #include "formats/file_io.h"
-#include "formats/gltf/gltf_export_internal.h"
 #include "formats/gltf/gltf_writer.h"
 #include "formats/motion_io.h"
 #include "tests/formats/bvh_test_support.h"
@@ -275,40 +274,6 @@ TEST(BvhGlbStream, EveryCorpusClipGivesTheClipPathsBytes) {
     EXPECT_EQ(ReadText(dir + "/out.glb"), *expected) << path;
   }
   EXPECT_EQ(streamed, static_cast<int>(files.size()) - 1);  // Boxing_Toes.bvh warns (3,069 declared, 3,070 rows)
-}
-
-// The direct JSON writer (glb_json.cc) prints what tinygltf's serialiser prints, and leaves
-// models with meshes or skins to it.
-TEST(GlbJson, DirectWriterEqualsTinygltfsSerialiser) {
-  std::vector<std::string> sources = FixtureBvhFiles();
-  if (!testing::DataDir().empty()) {
-    for (const std::string& f : testing::CorpusFiles("bandai-namco-1/data", ".bvh")) sources.push_back(f);
-    for (const std::string& f : testing::CorpusFiles("cmu", ".bvh")) sources.push_back(f);
-  }
-  for (const std::string& path : sources) {
-    const Result<Scene> scene = ImportFile(path);
-    ASSERT_TRUE(scene.ok()) << path;
-    const Result<gltf_internal::GlbJsonPair> json = gltf_internal::GlbJsonBothWays(*scene);
-    ASSERT_TRUE(json.ok()) << path;
-    ASSERT_TRUE(json->direct.has_value()) << path;
-    EXPECT_EQ(*json->direct, json->tinygltf) << path;
-  }
-  // Sparse keys (a sketch), several clips with odd names, extras with empty arrays.
-  Result<Scene> sketch = ImportFile(FixturePath("sketches/walk_proud_002_legs8.glb"));
-  ASSERT_TRUE(sketch.ok());
-  sketch->clips.push_back(sketch->clips[0]);
-  sketch->clips[1].name = "quote \" backslash \\ tab \t é";
-  sketch->skeleton.mutable_joint(1).bvh_channels.clear();
-  const Result<gltf_internal::GlbJsonPair> json = gltf_internal::GlbJsonBothWays(*sketch);
-  ASSERT_TRUE(json.ok() && json->direct.has_value());
-  EXPECT_EQ(*json->direct, json->tinygltf);
-  EXPECT_NE(json->tinygltf.find("\"keys\""), std::string::npos);
-
-  const Result<Scene> skinned = ImportFile(FixturePath("gltf/simple_skin.gltf"));
-  ASSERT_TRUE(skinned.ok());
-  const Result<gltf_internal::GlbJsonPair> with_mesh = gltf_internal::GlbJsonBothWays(*skinned);
-  ASSERT_TRUE(with_mesh.ok());
-  EXPECT_FALSE(with_mesh->direct.has_value());
 }
 
 }  // namespace
