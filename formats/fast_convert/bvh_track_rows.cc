@@ -10,9 +10,6 @@ namespace mocapfill::fast_convert {
 
 namespace {
 
-using bvh::rows::JointSampler;
-using bvh::rows::RowEnd;
-
 constexpr double kAnimatedToleranceM = 1e-9;  // ReadBvh's (TranslationMoves)
 
 // What the rest of the clip needs from a run of rows: for the hemisphere join, each joint's
@@ -27,61 +24,71 @@ struct Chunk {
   std::vector<PositionRange> ranges;
 };
 
-// Parses the rows of [p, end) into frames first_frame, first_frame + 1, ... of the tracks,
-// never at or past frame_limit. Each frame is composed as ReadBvh composes it (FrameComposer,
-// hemisphere-matched to the frame before within the chunk) and packed as WriteGlb packs it
-// (PackRotations, PackTranslation after scaling to metres).
-Chunk PackChunk(const char* p, const char* end, const TrackTarget& target, int64_t first_frame, int64_t frame_limit) {
-  const std::vector<JointSampler>& samplers = *target.samplers;
-  const size_t joints = samplers.size();
-  const ClipTrackLayout& layout = target.layout;
-  std::vector<double> row(target.channels);
-  bvh::rows::FrameComposer composer(samplers, *target.groups, /*every_translation=*/false);
-  bvh::rows::RowScanner scanner(*target.groups, target.channels);
-  std::vector<Eigen::Quaterniond> previous(joints), current(joints);
-  std::vector<Eigen::Vector3d> translations(joints);
-  Chunk chunk;
-  chunk.last_packed.assign(joints, Eigen::Vector4d::Zero());
-  chunk.ranges.resize(target.position_joints.size());
-  for (int64_t frame = first_frame;; ++frame) {
-    while (p < end && bvh::IsBvhSpace(*p)) ++p;
-    if (p == end) {
-      chunk.ok = chunk.rows > 0;
-      chunk.last_rotation = std::move(previous);
-      return chunk;
-    }
-    if (frame >= frame_limit || scanner.Scan(p, end, row.data()).kind != RowEnd::kComplete)
-      return chunk;
-    const bool first = frame == first_frame;
-    composer.Compose(scanner, row.data(), first ? nullptr : previous.data(), current.data(), translations.data());
-    if (first) chunk.first_rotation = current;
-    // A kept rotation is the one before, so it packs to the floats before (PackRotation of q
-    // towards its own packed +-q gives that packed value again).
-    float* rotation_floats = target.tracks + layout.RotationTrack(0) + 4 * frame;
-    const size_t track_stride = 4 * layout.frames;
-    PackListedRotations(current.data(), composer.composed().data(), composer.composed().size(), chunk.last_packed.data(),
-                        rotation_floats, track_stride);
-    for (const uint32_t j : composer.kept())
-      std::memcpy(rotation_floats + j * track_stride, rotation_floats + j * track_stride - 4, 4 * sizeof(float));
-    for (size_t k = 0; k < target.position_joints.size(); ++k) {
-      float* packed = target.tracks + layout.TranslationTrack(k) + 3 * frame;
-      if (!first && target.position_groups[k] >= 0 && scanner.Reused(target.position_groups[k])) {
-        std::memcpy(packed, packed - 3, 3 * sizeof(float));  // the same text: the same value, range unchanged
-        continue;
-      }
-      const Eigen::Vector3d t = translations[target.position_joints[k]] * target.metres_per_unit;
-      PackTranslation(t, packed);
-      PositionRange& range = chunk.ranges[k];
-      if (first) {
-        range.first = range.min = range.max = t;
-      } else {
-        range.min = range.min.cwiseMin(t);
-        range.max = range.max.cwiseMax(t);
-      }
-    }
-    std::swap(previous, current);
-    ++chunk.rows;
+// ParsePiece's sink for .glb tracks: each frame, composed into arrays of its own, is packed
+// as WriteGlb packs it (PackRotations, PackTranslation after scaling to metres) while it is in
+// cache; `chunk` gathers what the join and the ranges need.
+class TrackSink {
+ public:
+  TrackSink(const TrackTarget& target, Chunk& chunk)
+      : target_(target), chunk_(chunk), previous_(target.layout.joints), current_(target.layout.joints),
+        translations_(target.layout.joints) {
+    chunk.last_packed.assign(target.layout.joints, Eigen::Vector4d::Zero());
+    chunk.ranges.resize(target.position_joints.size());
   }
+  Eigen::Quaterniond* Rotations(int64_t) { return current_.data(); }
+  const Eigen::Quaterniond* Previous(int64_t) { return previous_.data(); }
+  Eigen::Vector3d* Translations(int64_t) { return translations_.data(); }
+  void Composed(int64_t frame, bool first, const bvh::rows::RowScanner& scanner, const bvh::rows::FrameComposer& composer);
+  std::vector<Eigen::Quaterniond> TakeLastRotations() { return std::move(previous_); }
+
+ private:
+  const TrackTarget& target_;
+  Chunk& chunk_;
+  std::vector<Eigen::Quaterniond> previous_, current_;
+  std::vector<Eigen::Vector3d> translations_;
+};
+
+void TrackSink::Composed(int64_t frame, bool first, const bvh::rows::RowScanner& scanner,
+                         const bvh::rows::FrameComposer& composer) {
+  const ClipTrackLayout& layout = target_.layout;
+  if (first) chunk_.first_rotation = current_;
+  // A kept rotation is the one before, so it packs to the floats before (PackRotation of q
+  // towards its own packed +-q gives that packed value again).
+  float* rotation_floats = target_.tracks + layout.RotationTrack(0) + 4 * frame;
+  const size_t track_stride = 4 * layout.frames;
+  PackListedRotations(current_.data(), composer.composed().data(), composer.composed().size(),
+                      chunk_.last_packed.data(), rotation_floats, track_stride);
+  for (const uint32_t j : composer.kept())
+    std::memcpy(rotation_floats + j * track_stride, rotation_floats + j * track_stride - 4, 4 * sizeof(float));
+  for (size_t k = 0; k < target_.position_joints.size(); ++k) {
+    float* packed = target_.tracks + layout.TranslationTrack(k) + 3 * frame;
+    if (!first && target_.position_groups[k] >= 0 && scanner.Reused(target_.position_groups[k])) {
+      std::memcpy(packed, packed - 3, 3 * sizeof(float));  // the same text: the same value, range unchanged
+      continue;
+    }
+    const Eigen::Vector3d t = translations_[target_.position_joints[k]] * target_.metres_per_unit;
+    PackTranslation(t, packed);
+    PositionRange& range = chunk_.ranges[k];
+    if (first) {
+      range.first = range.min = range.max = t;
+    } else {
+      range.min = range.min.cwiseMin(t);
+      range.max = range.max.cwiseMax(t);
+    }
+  }
+  std::swap(previous_, current_);
+}
+
+// The rows of `piece` packed into its frames of the tracks (ParsePiece with a TrackSink).
+Chunk PackChunk(const RowPiece& piece, const TrackTarget& target, int64_t frame_limit) {
+  Chunk chunk;
+  TrackSink sink(target, chunk);
+  const PieceParse parse = ParsePiece(piece, frame_limit, *target.samplers, *target.groups, target.channels,
+                                      /*every_translation=*/false, sink);
+  chunk.rows = parse.rows;
+  chunk.ok = parse.ok && parse.rows > 0;
+  if (chunk.ok) chunk.last_rotation = sink.TakeLastRotations();
+  return chunk;
 }
 
 // Negates the joints of `after` whose rotation chains continue those of `before` in the
@@ -115,19 +122,19 @@ bool PositionRange::Moves() const {
 }
 
 bool PackRows(std::string_view rows_text, const TrackTarget& target, int threads, std::vector<PositionRange>& ranges) {
-  const char* begin = rows_text.data();
-  const char* end = begin + rows_text.size();
   const int64_t frames = static_cast<int64_t>(target.layout.frames);
   if (threads == 1 || rows_text.size() < kParallelRowsMinBytes) {
-    Chunk all = PackChunk(begin, end, target, 0, frames);
+    RowPiece whole;
+    whole.begin = rows_text.data();
+    whole.end = rows_text.data() + rows_text.size();
+    Chunk all = PackChunk(whole, target, frames);
     ranges = std::move(all.ranges);
     return all.ok && all.rows == frames;
   }
   std::vector<RowPiece> pieces = SplitIntoPieces(rows_text);
   std::vector<Chunk> chunks(pieces.size());
   CountAndParseOnTwoThreads(pieces, [&](size_t i) {
-    const RowPiece& piece = pieces[i];
-    chunks[i] = PackChunk(piece.begin, piece.end, target, piece.first_frame, std::min(frames, piece.first_frame + piece.rows));
+    chunks[i] = PackChunk(pieces[i], target, std::min(frames, pieces[i].first_frame + pieces[i].rows));
   });
   int64_t total = 0;
   for (size_t i = 0; i < pieces.size(); ++i) {

@@ -30,43 +30,25 @@ void OnBothThreads(Work work) {
   if (helper) helper->Join();
 }
 
-// Whether a clip piece parsed to its end, and how many rows it held.
-struct ClipPiece {
-  bool ok = false;
-  int64_t rows = 0;
-};
-
-// Parses the rows of one piece into its frames of `clip`, never at or past frame_limit. The
-// piece's first frame is not turned towards the frame before it (another thread may still be
-// writing that one): the join does that.
-ClipPiece ParseClipPiece(const RowPiece& piece, const std::vector<JointSampler>& samplers,
-                         const std::vector<bvh::rows::ChannelGroup>& groups, int channels, int64_t frame_limit,
-                         MotionClip& clip) {
-  const size_t joints = samplers.size();
-  // Each thread maps the pages it is about to fill, so the two share that work too.
-  const size_t first = static_cast<size_t>(piece.first_frame) * joints;
-  const size_t count = static_cast<size_t>(std::max<int64_t>(0, frame_limit - piece.first_frame)) * joints;
-  PrefaultForWrite(clip.rotations.data() + first, count * sizeof(Eigen::Quaterniond));
-  PrefaultForWrite(clip.translations.data() + first, count * sizeof(Eigen::Vector3d));
-  std::vector<double> row(channels);
-  bvh::rows::FrameComposer composer(samplers, groups);
-  bvh::rows::RowScanner scanner(groups, channels);
-  ClipPiece result;
-  const char* p = piece.begin;
-  for (int64_t frame = piece.first_frame;; ++frame) {
-    while (p < piece.end && bvh::IsBvhSpace(*p)) ++p;
-    if (p == piece.end) {
-      result.ok = true;
-      return result;
-    }
-    if (frame >= frame_limit || scanner.Scan(p, piece.end, row.data()).kind != bvh::rows::RowEnd::kComplete)
-      return result;
-    Eigen::Quaterniond* rotations = clip.rotations.data() + frame * joints;
-    composer.Compose(scanner, row.data(), frame > piece.first_frame ? rotations - joints : nullptr, rotations,
-                     clip.translations.data() + frame * joints);
-    ++result.rows;
+// ParsePiece's sink for a clip: every frame composed in place, into the clip's arrays, each
+// piece's pages mapped by the thread about to fill them.
+class ClipSink {
+ public:
+  ClipSink(MotionClip& clip, size_t joints, int64_t first_frame, int64_t frame_limit) : clip_(clip), joints_(joints) {
+    const size_t first = static_cast<size_t>(first_frame) * joints;
+    const size_t count = static_cast<size_t>(std::max<int64_t>(0, frame_limit - first_frame)) * joints;
+    PrefaultForWrite(clip.rotations.data() + first, count * sizeof(Eigen::Quaterniond));
+    PrefaultForWrite(clip.translations.data() + first, count * sizeof(Eigen::Vector3d));
   }
-}
+  Eigen::Quaterniond* Rotations(int64_t frame) { return clip_.rotations.data() + frame * joints_; }
+  const Eigen::Quaterniond* Previous(int64_t frame) { return Rotations(frame) - joints_; }
+  Eigen::Vector3d* Translations(int64_t frame) { return clip_.translations.data() + frame * joints_; }
+  void Composed(int64_t, bool, const bvh::rows::RowScanner&, const bvh::rows::FrameComposer&) {}
+
+ private:
+  MotionClip& clip_;
+  size_t joints_;
+};
 
 }  // namespace
 
@@ -149,10 +131,11 @@ bool ParseRowsIntoClip(std::string_view rows_text, const std::vector<JointSample
   clip.translations.resize(declared_frames * joints);
 
   std::vector<RowPiece> pieces = SplitIntoPieces(rows_text);
-  std::vector<ClipPiece> parsed(pieces.size());
+  std::vector<PieceParse> parsed(pieces.size());
   CountAndParseOnTwoThreads(pieces, [&](size_t i) {
     const int64_t limit = std::min(declared_frames, pieces[i].first_frame + pieces[i].rows);
-    parsed[i] = ParseClipPiece(pieces[i], samplers, groups, channels, limit, clip);
+    ClipSink sink(clip, joints, pieces[i].first_frame, limit);
+    parsed[i] = ParsePiece(pieces[i], limit, samplers, groups, channels, /*every_translation=*/true, sink);
   });
   int64_t frames = 0;
   for (size_t i = 0; i < pieces.size(); ++i) {

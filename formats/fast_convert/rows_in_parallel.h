@@ -46,6 +46,44 @@ std::vector<RowPiece> SplitIntoPieces(std::string_view rows_text);
 // taking the next piece in turn; on this thread alone when no thread can be had.
 void CountAndParseOnTwoThreads(std::vector<RowPiece>& pieces, const std::function<void(size_t)>& parse);
 
+// Whether a piece parsed to its end, and the rows it held.
+struct PieceParse {
+  bool ok = false;
+  int64_t rows = 0;
+};
+
+// The fast path's row loop, for a clip and for .glb tracks alike: parses the rows of `piece`
+// into frames piece.first_frame, piece.first_frame + 1, ..., never at or past frame_limit. Each
+// row is scanned (RowScanner) and composed (FrameComposer) as ReadBvh composes it, into the
+// arrays `sink` gives for its frame: sink.Rotations(frame), sink.Translations(frame) and
+// sink.Previous(frame), the frame before's rotations (not asked for the piece's first frame,
+// which is composed without one: the hemisphere join turns it). sink.Composed(frame, first,
+// scanner, composer) then takes the frame.
+template <class Sink>
+PieceParse ParsePiece(const RowPiece& piece, int64_t frame_limit, const std::vector<bvh::rows::JointSampler>& samplers,
+                      const std::vector<bvh::rows::ChannelGroup>& groups, int channels, bool every_translation,
+                      Sink& sink) {
+  std::vector<double> row(channels);
+  bvh::rows::FrameComposer composer(samplers, groups, every_translation);
+  bvh::rows::RowScanner scanner(groups, channels);
+  PieceParse result;
+  const char* p = piece.begin;
+  for (int64_t frame = piece.first_frame;; ++frame) {
+    while (p < piece.end && bvh::IsBvhSpace(*p)) ++p;
+    if (p == piece.end) {
+      result.ok = true;
+      return result;
+    }
+    if (frame >= frame_limit || scanner.Scan(p, piece.end, row.data()).kind != bvh::rows::RowEnd::kComplete)
+      return result;
+    const bool first = frame == piece.first_frame;
+    composer.Compose(scanner, row.data(), first ? nullptr : sink.Previous(frame), sink.Rotations(frame),
+                     sink.Translations(frame));
+    sink.Composed(frame, first, scanner, composer);
+    ++result.rows;
+  }
+}
+
 // The hemisphere join of one joint at a piece boundary. The serial parse would have turned
 // the piece's first rotation `first` towards the rotation before it, `before_last` (sign 1),
 // and a packed track would have turned its normalised value towards the last packed value
