@@ -26,6 +26,26 @@ std::string ReadText(const std::string& path) {
   return buffer.str();
 }
 
+std::string EnlargeMotion(const std::string& text, size_t min_bytes, int frames_delta) {
+  const size_t frame_time = text.find("Frame Time");
+  const size_t rows_begin = text.find('\n', frame_time) + 1;
+  std::string rows = text.substr(rows_begin);
+  if (!rows.empty() && rows.back() != '\n') rows += '\n';
+  const std::string eol = rows.find("\r\n") != std::string::npos ? "\r\n" : "\n";
+  int64_t per_copy = 0;
+  for (size_t p = 0; (p = rows.find('\n', p)) != std::string::npos; ++p) ++per_copy;
+  std::string motion;
+  int64_t frames = 0;
+  while (motion.size() < min_bytes) {
+    motion += rows;
+    frames += per_copy;
+  }
+  const size_t frames_line = text.find("Frames:");
+  const size_t frames_end = text.find('\n', frames_line);
+  return text.substr(0, frames_line) + "Frames: " + std::to_string(frames + frames_delta) + eol +
+         text.substr(frames_end + 1, rows_begin - frames_end - 1) + motion;
+}
+
 std::vector<std::vector<double>> MotionRows(const std::string& bvh_text) {
   std::string text = bvh_text;
   std::replace(text.begin(), text.end(), '\r', '\n');

@@ -24,6 +24,11 @@ Result<Scene> ReadFixture(const std::string& name, const ImportOptions& options 
 // Reads a whole file as bytes (test helper: fails the test on error and returns "").
 std::string ReadText(const std::string& path);
 
+// `text` with its motion rows repeated until the motion section holds at least `min_bytes`,
+// and the Frames line rewritten to the new row count plus `frames_delta` (large inputs for
+// the two-thread and streaming parsers, made from real captures).
+std::string EnlargeMotion(const std::string& text, size_t min_bytes, int frames_delta = 0);
+
 // The numbers of every frame row (the lines after "Frame Time"), split on whitespace.
 std::vector<std::vector<double>> MotionRows(const std::string& bvh_text);
 

@@ -24,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::FixturePath;
+using testing::EnlargeMotion;
 using testing::ReadText;
 
 std::optional<std::string> Streamed(const std::string& text, const std::string& path, int threads,
@@ -42,22 +43,6 @@ Result<std::string> ThroughTheClip(const std::string& text, const std::string& p
 }
 
 std::vector<std::string> FixtureBvhFiles() { return testing::FixtureFiles("bvh", ".bvh"); }
-
-// Rows of `text` repeated until the motion section holds at least `min_bytes`, with the
-// Frames line rewritten to match.
-std::string Enlarge(const std::string& text, size_t min_bytes) {
-  const size_t rows_begin = text.find('\n', text.find("Frame Time")) + 1;
-  std::string rows = text.substr(rows_begin);
-  if (rows.back() != '\n') rows += '\n';
-  const int64_t per_copy = std::count(rows.begin(), rows.end(), '\n');
-  std::string motion;
-  int64_t frames = 0;
-  for (; motion.size() < min_bytes; frames += per_copy) motion += rows;
-  const size_t frames_line = text.find("Frames:");
-  const size_t frames_end = text.find('\n', frames_line);
-  return text.substr(0, frames_line) + "Frames: " + std::to_string(frames) + "\n" +
-         text.substr(frames_end + 1, rows_begin - frames_end - 1) + motion;
-}
 
 TEST(BvhGlbStream, EveryPlainFixtureGivesTheClipPathsBytes) {
   int streamed = 0;
@@ -103,7 +88,7 @@ TEST(BvhGlbStream, SkinChoicesGiveTheClipPathsBytes) {
 TEST(BvhGlbStream, TwoThreadsGiveTheSerialBytes) {
   for (const char* name : {"cmu_01_01_short.bvh", "bandai_walk_normal_001_short.bvh", "cmu_mixed_orders.bvh",
                            "cmu_two_roots.bvh", "cmu_crlf.bvh"}) {
-    const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + name)), 4 * fast_convert::kParallelRowsMinBytes);
+    const std::string text = EnlargeMotion(ReadText(FixturePath(std::string("bvh/") + name)), 4 * fast_convert::kParallelRowsMinBytes);
     const Result<std::string> expected = ThroughTheClip(text, "big.bvh");
     ASSERT_TRUE(expected.ok()) << name;
     const std::optional<std::string> serial = Streamed(text, "big.bvh", 1);
@@ -141,7 +126,7 @@ TEST(BvhGlbStream, HemisphereFlipsAtTheSplitAreJoinedExactly) {
 // ends exactly at a page boundary has no byte after it that a parser could read: the mapped
 // conversion (whole pages, nothing beyond) must write what the clip path writes.
 TEST(BvhGlbStream, MappedInputEndingOnAPageBoundaryConvertsAsTheClipPath) {
-  std::string text = Enlarge(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), kMapFileMinBytes + 1);
+  std::string text = EnlargeMotion(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), kMapFileMinBytes + 1);
   constexpr size_t kPage = 4096;
   // Spaces after the last row's newline, then a last newline on the page's final byte.
   const size_t padded = (text.size() + 1 + kPage - 1) / kPage * kPage;
@@ -219,7 +204,7 @@ TEST(BvhGlbStream, AnythingButAPlainImportIsLeftToTheClipPath) {
     EXPECT_FALSE(Streamed(ReadText(bad_path), bad_path, 0).has_value()) << bad;
   }
   // A declared frame count off by one either way.
-  const std::string more = Enlarge(text, 1000);
+  const std::string more = EnlargeMotion(text, 1000);
   const size_t frames_at = more.find("Frames: ") + 8;
   const int frames = std::stoi(more.substr(frames_at));
   for (int delta : {-1, 1}) {

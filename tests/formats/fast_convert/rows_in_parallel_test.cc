@@ -16,30 +16,9 @@ namespace mocapfill {
 namespace {
 
 using testing::FixturePath;
+using testing::EnlargeMotion;
 using testing::ReadText;
 using fast_convert::kParallelRowsMinBytes;
-
-// The fixture's text with its motion rows repeated until the motion section is at least
-// `min_bytes`, and the Frames line rewritten to the new row count plus `frames_delta`.
-std::string Enlarge(const std::string& text, size_t min_bytes, int frames_delta = 0) {
-  const size_t frame_time = text.find("Frame Time");
-  const size_t rows_begin = text.find('\n', frame_time) + 1;
-  std::string rows = text.substr(rows_begin);
-  if (!rows.empty() && rows.back() != '\n') rows += '\n';
-  const std::string eol = rows.find("\r\n") != std::string::npos ? "\r\n" : "\n";
-  int64_t per_copy = 0;
-  for (size_t p = 0; (p = rows.find('\n', p)) != std::string::npos; ++p) ++per_copy;
-  std::string motion;
-  int64_t frames = 0;
-  while (motion.size() < min_bytes) {
-    motion += rows;
-    frames += per_copy;
-  }
-  const size_t frames_line = text.find("Frames:");
-  const size_t frames_end = text.find('\n', frames_line);
-  return text.substr(0, frames_line) + "Frames: " + std::to_string(frames + frames_delta) + eol +
-         text.substr(frames_end + 1, rows_begin - frames_end - 1) + motion;
-}
 
 Result<Scene> Read(const std::string& text, int threads) {
   return ReadBvh(text, "big.bvh", {}, threads == 1 ? nullptr : &fast_convert::ParseRowsIntoClip);
@@ -60,7 +39,7 @@ void ExpectBitIdentical(const Scene& a, const Scene& b) {
 class BvhParallel : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(BvhParallel, LargeMotionIsBitIdenticalToTheSerialParse) {
-  const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + GetParam())),
+  const std::string text = EnlargeMotion(ReadText(FixturePath(std::string("bvh/") + GetParam())),
                                    4 * kParallelRowsMinBytes);
   const Result<Scene> serial = Read(text, 1);
   const Result<Scene> parallel = Read(text, 0);
@@ -72,7 +51,7 @@ TEST_P(BvhParallel, LargeMotionIsBitIdenticalToTheSerialParse) {
 
 TEST_P(BvhParallel, FrameCountMismatchGivesTheSerialWarnings) {
   for (int delta : {-7, +7}) {
-    const std::string text = Enlarge(ReadText(FixturePath(std::string("bvh/") + GetParam())),
+    const std::string text = EnlargeMotion(ReadText(FixturePath(std::string("bvh/") + GetParam())),
                                      4 * kParallelRowsMinBytes, delta);
     const Result<Scene> serial = Read(text, 1);
     const Result<Scene> parallel = Read(text, 0);
@@ -93,7 +72,7 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, BvhParallel,
 // A bad value late in the second half: the parallel attempt gives up and the error names
 // the same line and column as the serial parse.
 TEST(BvhParallelErrors, BadValueInTheSecondHalfReportsTheSameLine) {
-  std::string text = Enlarge(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), 4 * kParallelRowsMinBytes);
+  std::string text = EnlargeMotion(ReadText(FixturePath("bvh/cmu_01_01_short.bvh")), 4 * kParallelRowsMinBytes);
   const size_t at = text.rfind('\n', text.size() - 2000);
   text.insert(at + 1, "nan ");
   const Result<Scene> serial = Read(text, 1);
