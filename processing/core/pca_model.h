@@ -49,7 +49,7 @@ struct PcaModel {
   Eigen::VectorXd residual_variance;
   // Root-mean-square second difference over database frames (per frame, at sample_rate_hz):
   // of each coefficient c_k (K entries) and of each pose channel (pose_dim entries). These
-  // are the smoothness sigmas s_acc of the Ceres key fit (processing/pca/pca_fit.h): a
+  // are the smoothness sigmas s_acc of the Ceres key fit (processing/pca/ceres_fit/pca_fit.h): a
   // database statistic, so the smoothness weight carries over between frame rates.
   Eigen::VectorXd coefficient_accel_rms;
   Eigen::VectorXd channel_accel_rms;

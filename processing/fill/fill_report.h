@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "processing/pca/pca_fit.h"
+#include "processing/pca/ceres_fit/pca_fit.h"
 #include "processing/synthesis/fragment_fill_report.h"
 
 namespace mocapfill {

@@ -18,7 +18,7 @@
 #include "processing/core/status.h"
 #include "processing/core/motion_database.h"
 #include "processing/hybrid/pca_method_options.h"
-#include "processing/pca/pca_fit.h"
+#include "processing/pca/ceres_fit/pca_fit.h"
 #include "processing/pca/pca_sketch.h"
 #include "processing/synthesis/fragment_fill_engine.h"
 #include "processing/synthesis/fragment_fill_options.h"

@@ -18,7 +18,7 @@
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
 #include "processing/pca/closed_form_fit.h"
-#include "processing/pca/pca_fit.h"
+#include "processing/pca/ceres_fit/pca_fit.h"
 
 namespace mocapfill {
 

@@ -9,7 +9,7 @@
 #include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill_stages.h"
 #include "processing/synthesis/fragment_matching.h"
-#include "processing/synthesis/hierarchy.h"
+#include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"

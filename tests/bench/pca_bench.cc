@@ -23,7 +23,7 @@
 #include "processing/evaluation/sketch_maker.h"
 #include "processing/pca/closed_form_fit.h"
 #include "processing/pca/pca_clip.h"
-#include "processing/pca/pca_fit.h"
+#include "processing/pca/ceres_fit/pca_fit.h"
 #include "processing/pca/pca_model_builder.h"
 #include "processing/pca/pca_sketch.h"
 

@@ -9,7 +9,7 @@
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
 #include "processing/fill/fill_engine.h"
-#include "processing/synthesis/hierarchy.h"
+#include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/sketch_signals.h"
 #include "processing/texturing/texture_channels.h"
 #include "tests/support/default_db.h"

@@ -8,8 +8,8 @@
 #include <functional>
 #include <string>
 
-#include "processing/pca/internal/kinematic_costs.h"
-#include "processing/pca/pca_fit.h"
+#include "processing/pca/ceres_fit/internal/kinematic_costs.h"
+#include "processing/pca/ceres_fit/pca_fit.h"
 
 namespace mocapfill::pca_internal {
 

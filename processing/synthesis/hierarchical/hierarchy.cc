@@ -1,4 +1,4 @@
-#include "processing/synthesis/hierarchy.h"
+#include "processing/synthesis/hierarchical/hierarchy.h"
 
 #include <algorithm>
 #include <deque>

@@ -1,4 +1,4 @@
-#include "processing/pca/internal/fit_common.h"
+#include "processing/pca/ceres_fit/internal/fit_common.h"
 
 #include <algorithm>
 #include <cmath>

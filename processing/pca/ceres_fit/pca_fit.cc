@@ -1,4 +1,4 @@
-#include "processing/pca/pca_fit.h"
+#include "processing/pca/ceres_fit/pca_fit.h"
 
 #include <chrono>
 #include <memory>
@@ -7,8 +7,8 @@
 #include "processing/core/rotation.h"
 #include "processing/core/stopwatch.h"
 #include "processing/pca/closed_form_fit.h"
-#include "processing/pca/internal/fit_common.h"
-#include "processing/pca/internal/linear_cost.h"
+#include "processing/pca/ceres_fit/internal/fit_common.h"
+#include "processing/pca/ceres_fit/internal/linear_cost.h"
 #include "processing/pca/pca_projection.h"
 
 namespace mocapfill {
