@@ -1,6 +1,6 @@
 // Internal to formats: the steps from a parsed BVH (hierarchy, motion header) to a Scene,
-// shared by ReadBvh and the streaming BVH-to-.glb converter (formats/bvh_glb), so that
-// both make the same skeleton, units and source record.
+// shared by ReadBvh and the streaming BVH-to-.glb converter (formats/fast_convert/bvh_to_glb.h),
+// so that both make the same skeleton, units and source record.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 // How an exported .glb stores one clip's samples, and the float32 packing of each sample.
-// WriteGlb packs them from a MotionClip; the streaming BVH converter (formats/bvh_glb)
+// WriteGlb packs them from a MotionClip; the streaming BVH converter (formats/fast_convert/bvh_to_glb.h)
 // packs them while it parses, with these same functions, so both give the same bytes.
 #pragma once
 
