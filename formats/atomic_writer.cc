@@ -189,9 +189,11 @@ Status WriteFileAtomic(const std::string& path, const std::string& bytes) {
   return WriteFileAtomicParts(path, {std::string_view(bytes)});
 }
 
-Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts) {
-  AtomicWriter writer;
-  return writer.Write(path, parts);
+Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts,
+                            AtomicWriter* writer) {
+  if (writer != nullptr) return writer->Write(path, parts);
+  AtomicWriter own;
+  return own.Write(path, parts);
 }
 
 size_t RemoveStaleTemporaries(const std::string& folder) {

@@ -51,8 +51,10 @@ class AtomicWriter {
 Status WriteFileAtomic(const std::string& path, const std::string& bytes);
 
 // WriteFileAtomic of the concatenation of `parts`, without joining them in memory first
-// (a .glb's binary chunk is most of the file).
-Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts);
+// (a .glb's binary chunk is most of the file). Through `writer` when one is given (a caller
+// writing many files keeps one per thread, which reuses the files it replaces).
+Status WriteFileAtomicParts(const std::string& path, std::initializer_list<std::string_view> parts,
+                            AtomicWriter* writer = nullptr);
 
 // Removes from `folder` the temporary files ("NAME.tmp-PID") that writers of processes no
 // longer running left behind: a run killed with SIGKILL cannot remove its own. Files of

@@ -15,11 +15,6 @@ namespace {
 
 const char* const kAssimpExtensions[] = {".fbx", ".dae", ".x", ".3ds", ".ms3d", ".md5mesh", ".ogex", ".smd", ".b3d"};
 
-Status WriteOut(AtomicWriter* writer, const std::string& path, std::initializer_list<std::string_view> parts) {
-  if (writer != nullptr) return writer->Write(path, parts);
-  return WriteFileAtomicParts(path, parts);
-}
-
 bool IsAssimpExtension(const std::string& ext) {
   for (const char* e : kAssimpExtensions)
     if (ext == e) return true;
@@ -69,7 +64,7 @@ Status ExportFile(const Scene& scene, const std::string& path, const ExportOptio
     Result<GlbFile> glb = WriteGlb(scene, options);
     if (!glb.ok()) return glb.status().WithContext(path);
     const std::string_view bin(reinterpret_cast<const char*>(glb->bin.data()), glb->bin.size());
-    return WriteOut(writer, path, {glb->head, bin});
+    return WriteFileAtomicParts(path, {glb->head, bin}, writer);
   }
   Result<std::string> bytes = Status();
   if (ext == ".bvh") {
@@ -80,7 +75,7 @@ Status ExportFile(const Scene& scene, const std::string& path, const ExportOptio
     return InvalidArgument(path + ": unknown output extension '" + ext + "' (expected .gltf, .glb or .bvh)");
   }
   if (!bytes.ok()) return bytes.status().WithContext(path);
-  return WriteOut(writer, path, {std::string_view(*bytes)});
+  return WriteFileAtomicParts(path, {std::string_view(*bytes)}, writer);
 }
 
 ConvertResult ConvertFile(const std::string& input, const std::string& output, const ImportOptions& import_options,

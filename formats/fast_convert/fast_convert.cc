@@ -21,14 +21,7 @@ namespace {
 // clip), mapped at once instead of faulted in a page at a time.
 constexpr size_t kStartHeapBytes = size_t{512} << 10;
 
-Status WriteParts(AtomicWriter* writer, const std::string& path, std::initializer_list<std::string_view> parts) {
-  if (writer != nullptr) return writer->Write(path, parts);
-  return WriteFileAtomicParts(path, parts);
-}
-
 }  // namespace
-
-bool Available() { return true; }
 
 std::optional<ConvertResult> ConvertBvh(const std::string& input, const std::string& output,
                                         const ImportOptions& import_options, const ExportOptions& export_options,
@@ -47,7 +40,7 @@ std::optional<ConvertResult> ConvertBvh(const std::string& input, const std::str
         StreamBvhToGlb(text->view(), input, import_options, export_options, convert_options.threads);
     if (glb && text->intact()) {
       const std::string_view tail(reinterpret_cast<const char*>(glb->tail.data()), glb->tail.size());
-      result.status = WriteParts(writer, output, {glb->head, glb->tracks.view(), tail});
+      result.status = WriteFileAtomicParts(output, {glb->head, glb->tracks.view(), tail}, writer);
       result.failed_writing = !result.status.ok();
       if (convert_options.leave_input_to_exit) text->LeaveToExit();
       return result;

@@ -15,9 +15,6 @@
 
 namespace mocapfill::fast_convert {
 
-// Whether this build has the fast path (false: portable.cc).
-bool Available();
-
 // Writes a converted scene as ExportFile does (given by ConvertFile, which owns export).
 using SceneExport = std::function<Status(const Scene&)>;
 

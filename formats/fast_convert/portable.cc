@@ -4,8 +4,6 @@
 
 namespace mocapfill::fast_convert {
 
-bool Available() { return false; }
-
 std::optional<ConvertResult> ConvertBvh(const std::string&, const std::string&, const ImportOptions&,
                                         const ExportOptions&, const ConvertOptions&, AtomicWriter*,
                                         const SceneExport&) {

@@ -50,8 +50,8 @@ class ClipSink {
   size_t joints_;
 };
 
-}  // namespace
-
+// Rows of [p, end): lines holding something other than blanks. Rows that end in a lone CR
+// are undercounted; the parse then disagrees with the count and the serial loop takes over.
 int64_t CountRows(const char* p, const char* end) {
   int64_t count = 0;
   while (true) {
@@ -62,6 +62,8 @@ int64_t CountRows(const char* p, const char* end) {
     p = line_break != nullptr ? static_cast<const char*>(line_break) + 1 : end;
   }
 }
+
+}  // namespace
 
 std::vector<RowPiece> SplitIntoPieces(std::string_view rows_text) {
   const char* begin = rows_text.data();

@@ -24,10 +24,6 @@ namespace mocapfill::fast_convert {
 // more than it saves.
 inline constexpr size_t kParallelRowsMinBytes = size_t{384} << 10;
 
-// Rows of [p, end): lines holding something other than blanks. Rows that end in a lone CR
-// are undercounted; the parse then disagrees with the count and the serial loop takes over.
-int64_t CountRows(const char* p, const char* end);
-
 // A run of whole lines of the motion section, parsed as one piece.
 struct RowPiece {
   const char* begin = nullptr;

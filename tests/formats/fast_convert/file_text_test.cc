@@ -24,25 +24,14 @@
 #include "formats/file_io.h"
 #include "formats/fast_convert/file_text.h"
 #include "formats/fast_convert/large_buffer.h"
+#include "tests/formats/file_test_support.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill {
 namespace {
 
-std::string Pattern(size_t bytes) {
-  std::string s(bytes, '\0');
-  for (size_t i = 0; i < bytes; ++i) s[i] = static_cast<char>('a' + (i * 7 + i / 4093) % 26);
-  return s;
-}
-
-// A fifo at `fifo`, and a thread that writes `bytes` into it once a reader opens it.
-std::thread FeedFifo(const std::string& fifo, const std::string& bytes) {
-  EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << fifo;
-  return std::thread([fifo, &bytes] {
-    std::ofstream out(fifo, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  });
-}
+using testing::FeedFifo;
+using testing::Pattern;
 
 TEST(LargeBuffer, HoldsWhatIsWrittenBelowAndAboveItsOwnMappingSize) {
   for (size_t bytes : {size_t{0}, size_t{1}, size_t{4096}, (size_t{1} << 20) - 1, size_t{1} << 20,
