@@ -61,10 +61,12 @@ nlohmann::ordered_json ReportObject(const SketchFillResult& result, const std::s
   out["max_frame_jump_deg"] = result.max_frame_jump_deg;
   nlohmann::ordered_json contacts = nlohmann::ordered_json::array();
   for (const FootContact& c : result.feet.contacts)
-    contacts.push_back({{"foot", c.side}, {"from_s", c.start_s}, {"to_s", c.end_s},
-                        {"max_correction_m", c.max_correction_m}});
+    contacts.push_back({{"foot", c.side}, {"part", c.part}, {"from_s", c.start_s}, {"to_s", c.end_s},
+                        {"keys", c.keys}, {"max_correction_m", c.max_correction_m}});
+  nlohmann::ordered_json legs = nlohmann::ordered_json::array();
+  for (const PlantedLeg& leg : result.feet.legs) legs.push_back({{"foot", leg.side}, {"correction_m", leg.correction_m}});
   out["feet"] = {{"contacts", contacts}, {"frames_held", result.feet.frames_held},
-                 {"max_correction_m", result.feet.max_correction_m}};
+                 {"max_correction_m", result.feet.max_correction_m}, {"correction_per_frame", legs}};
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (const JointFillInfo& j : result.joints)
     joints.push_back({{"joint", j.name}, {"kind", j.kind}, {"keys", j.keys},

@@ -67,7 +67,7 @@ Status ScoreClips(const std::vector<LabeledClip>& clips, const std::string& fold
       Result<FillResult> filled = engine.Fill(sketch, method.options);
       if (filled.ok() && options.plant_feet) {
         ASSIGN_OR_RETURN(const RigMapping mapping, MapHumanoid(db.skeleton(), {}));
-        PlantFeet(db.skeleton(), LegsToPlant(mapping, sketch, db.root_joint()), options.feet, filled->clip);
+        PlantFeet(db.skeleton(), LegsToPlant(mapping, sketch), options.feet, filled->clip);
       }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!filled.ok()) return filled.status().WithContext("clip '" + c.clip.name + "', method " + method.name);

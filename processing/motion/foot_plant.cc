@@ -11,9 +11,166 @@ namespace mocapfill {
 
 namespace {
 
+using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-double Horizontal(const Vector3d& v) { return std::hypot(v.x(), v.z()); }
+struct LegTracks {
+  std::vector<Vector3d> ankle, toe;
+};
+
+LegTracks TrackLeg(const Skeleton& skeleton, const MotionClip& clip, const LegForPlanting& leg) {
+  LegTracks tracks;
+  WorldPose pose;
+  for (int f = 0; f < clip.num_frames; ++f) {
+    ComputeWorldPose(skeleton, clip, f, pose);
+    tracks.ankle.push_back(pose.positions[leg.chain.end]);
+    if (leg.toe >= 0) tracks.toe.push_back(pose.positions[leg.toe]);
+  }
+  return tracks;
+}
+
+std::vector<bool> PinnedFrames(const MotionClip& clip, const LegForPlanting& leg) {
+  std::vector<bool> pinned(clip.num_frames, false);
+  for (double t : leg.pinned_times_s) pinned[NearestFrame(clip, t)] = true;
+  return pinned;
+}
+
+// The ground under a joint: its lowest height where the animator keyed the leg (there the
+// motion is the animator's), or over the whole clip where the leg is synthesised.
+double FloorOf(const std::vector<Vector3d>& track, const std::vector<bool>& pinned) {
+  double keyed = INFINITY, all = INFINITY;
+  for (size_t f = 0; f < track.size(); ++f) {
+    all = std::min(all, track[f].y());
+    if (pinned[f]) keyed = std::min(keyed, track[f].y());
+  }
+  return std::isfinite(keyed) ? keyed : all;
+}
+
+// Where a joint is held over one contact: through its keyed positions (linear between them,
+// constant beyond), or at its mean position when no key falls inside.
+std::vector<Vector3d> AnchorsOf(const MotionClip& clip, const std::vector<Vector3d>& track,
+                                const std::vector<bool>& pinned, int first, int last) {
+  std::vector<int> keys;
+  for (int f = first; f <= last; ++f)
+    if (pinned[f]) keys.push_back(f);
+  std::vector<Vector3d> anchors(last - first + 1);
+  if (keys.empty()) {
+    Vector3d mean = Vector3d::Zero();
+    for (int f = first; f <= last; ++f) mean += track[f];
+    std::fill(anchors.begin(), anchors.end(), mean / double(last - first + 1));
+    return anchors;
+  }
+  for (int f = first; f <= last; ++f) {
+    const auto next = std::lower_bound(keys.begin(), keys.end(), f);
+    Vector3d& a = anchors[f - first];
+    if (next == keys.begin()) {
+      a = track[keys.front()];
+    } else if (next == keys.end()) {
+      a = track[keys.back()];
+    } else {
+      const int k0 = *(next - 1), k1 = *next;
+      const double s = (clip.time_s(f) - clip.time_s(k0)) / (clip.time_s(k1) - clip.time_s(k0));
+      a = track[k0] + s * (track[k1] - track[k0]);
+    }
+  }
+  return anchors;
+}
+
+struct JointContacts {
+  std::vector<bool> down;
+  std::vector<Vector3d> anchor;  // per frame, where down
+};
+
+JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<bool>& pinned,
+                           const ContactDetection& detection, const std::string& side, const std::string& part,
+                           std::vector<FootContact>& contacts) {
+  std::vector<double> times(clip.num_frames);
+  for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
+  JointContacts out{DetectContacts(track, times, FloorOf(track, pinned), detection),
+                    std::vector<Vector3d>(track.size(), Vector3d::Zero())};
+  for (const auto& [first, last] : ContactRuns(out.down)) {
+    const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
+    std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
+    FootContact c{side, part, times[first], times[last], 0, 0.0};
+    for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
+    contacts.push_back(c);
+  }
+  return out;
+}
+
+// A toe contact without keys of its own that begins while the heel is held takes its anchor
+// from the held heel: the foot lands flat and stays so, and when the heel lifts the ankle
+// turns about the toe where it stood, without a jump from one anchor to the other.
+void AnchorToesOnHeels(const std::vector<bool>& pinned, const LegTracks& tracks, const JointContacts& heel,
+                       JointContacts& toe) {
+  for (const auto& [first, last] : ContactRuns(toe.down)) {
+    bool keyed = false;
+    int landing = -1;
+    for (int f = first; f <= last; ++f) {
+      keyed = keyed || pinned[f];
+      if (landing < 0 && heel.down[f]) landing = f;
+    }
+    if (keyed || landing < 0) continue;
+    const Vector3d anchor = heel.anchor[landing] + (tracks.toe[landing] - tracks.ankle[landing]);
+    for (int f = first; f <= last; ++f) toe.anchor[f] = anchor;
+  }
+}
+
+// The move of the foot joint (world translation) and the turn of the foot (world rotation,
+// applied before its own) that hold the contacts at frame f.
+struct Correction {
+  Vector3d move = Vector3d::Zero();
+  Quaterniond turn = Quaterniond::Identity();
+  bool any = false;
+};
+
+Correction HoldAt(int f, const LegTracks& tracks, const JointContacts& heel, const JointContacts* toe,
+                  const Correction& before, double heel_off_weight) {
+  Correction c;
+  const bool toe_down = toe && toe->down[f];
+  if (heel.down[f]) {
+    c.move = heel.anchor[f] - tracks.ankle[f];
+    if (toe_down) c.turn = Quaterniond::FromTwoVectors(tracks.toe[f] - tracks.ankle[f], toe->anchor[f] - heel.anchor[f]);
+    c.any = true;
+  } else if (toe_down) {
+    // Heel off: the foot turns from where the held heel left it back to the fill's own
+    // turn (a foot snapping to the fill's pitch popped by up to 30 degrees), pivoting on the toe.
+    c.turn = before.any ? before.turn.slerp(heel_off_weight, Quaterniond::Identity()) : Quaterniond::Identity();
+    c.move = toe->anchor[f] - tracks.ankle[f] - c.turn * (tracks.toe[f] - tracks.ankle[f]);
+    c.any = true;
+  }
+  // Held along the ground only: the stance leg is nearly straight, where a centimetre of height
+  // asks for several of knee (knees shook around the keys), while sliding is horizontal.
+  c.move.y() = 0.0;
+  return c;
+}
+
+// Beyond a contact the correction of its edge frame fades out over `fade` frames (smoothstep);
+// a key of the leg ends the fade (the key's pose is the animator's).
+std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::vector<bool>& pinned, int fade) {
+  std::vector<Correction> out = held;
+  const int n = static_cast<int>(held.size());
+  for (int f = 0; f < n; ++f) {
+    if (held[f].any || pinned[f]) continue;
+    double best = 0.0;
+    for (int dir : {-1, 1})
+      for (int d = 1; d <= fade; ++d) {
+        const int e = f + dir * d;
+        if (e < 0 || e >= n || (pinned[e] && !held[e].any)) break;
+        if (!held[e].any) continue;
+        const double x = 1.0 - double(d) / (fade + 1);
+        const double w = x * x * (3.0 - 2.0 * x);  // smoothstep: no kink where the fade starts or ends
+        if (w > best) {
+          best = w;
+          out[f].move = w * held[e].move;
+          out[f].turn = Quaterniond::Identity().slerp(w, held[e].turn);
+          out[f].any = true;
+        }
+        break;
+      }
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -34,14 +191,18 @@ std::vector<double> JointlyKeyedTimes(const MotionClip& clip, const std::vector<
   return times;
 }
 
-std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch, int hips) {
+std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch) {
   using B = HumanoidBone;
   std::vector<LegForPlanting> legs;
-  for (const auto& [side, bones] : {std::pair{"left", std::array{B::kLeftUpperLeg, B::kLeftLowerLeg, B::kLeftFoot}},
-                                    std::pair{"right", std::array{B::kRightUpperLeg, B::kRightLowerLeg, B::kRightFoot}}}) {
+  for (const auto& [side, bones] :
+       {std::pair{"left", std::array{B::kLeftUpperLeg, B::kLeftLowerLeg, B::kLeftFoot, B::kLeftToes}},
+        std::pair{"right", std::array{B::kRightUpperLeg, B::kRightLowerLeg, B::kRightFoot, B::kRightToes}}}) {
     if (!mapping.has(bones[0]) || !mapping.has(bones[1]) || !mapping.has(bones[2])) continue;
-    LegForPlanting leg{side, {mapping.joint(bones[0]), mapping.joint(bones[1]), mapping.joint(bones[2])}, {}};
-    leg.key_times_s = JointlyKeyedTimes(sketch, {hips, leg.chain.upper, leg.chain.lower, leg.chain.end});
+    LegForPlanting leg{side, {mapping.joint(bones[0]), mapping.joint(bones[1]), mapping.joint(bones[2])},
+                       mapping.has(bones[3]) ? mapping.joint(bones[3]) : -1, {}};
+    for (int j : {leg.chain.upper, leg.chain.lower, leg.chain.end})
+      for (double t : RotationKeysOf(sketch, j).times_s) leg.pinned_times_s.push_back(t);
+    std::sort(leg.pinned_times_s.begin(), leg.pinned_times_s.end());
     legs.push_back(std::move(leg));
   }
   return legs;
@@ -50,42 +211,54 @@ std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionC
 FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlanting>& legs,
                           const FootPlantOptions& options, MotionClip& clip) {
   FootPlantReport report;
+  if (clip.num_frames < 2) return report;
+  const int fade = std::max(1, static_cast<int>(std::lround(options.fade_s * (clip.num_frames - 1) /
+                                                            std::max(1e-9, clip.time_s(clip.num_frames - 1) - clip.time_s(0)))));
   WorldPose pose;
   for (const LegForPlanting& leg : legs) {
-    if (leg.key_times_s.size() < 2) continue;
-    // The foot where the keys put it.
-    std::vector<int> frames;
-    std::vector<Vector3d> at_key;
-    for (double t : leg.key_times_s) {
-      frames.push_back(NearestFrame(clip, t));
-      ComputeWorldPose(skeleton, clip, frames.back(), pose);
-      at_key.push_back(pose.positions[leg.chain.end]);
+    const LegTracks tracks = TrackLeg(skeleton, clip, leg);
+    const std::vector<bool> pinned = PinnedFrames(clip, leg);
+    const size_t first_contact = report.contacts.size();
+    const JointContacts heel =
+        FindContacts(clip, tracks.ankle, pinned, options.detection, leg.side, "heel", report.contacts);
+    JointContacts toe;
+    if (leg.toe >= 0) {
+      toe = FindContacts(clip, tracks.toe, pinned, options.detection, leg.side, "toe", report.contacts);
+      AnchorToesOnHeels(pinned, tracks, heel, toe);
     }
-    const Eigen::Vector3d hinge = HingeOf(skeleton, clip, leg.chain);
-    double lowest = at_key.front().y();
-    for (const Vector3d& p : at_key) lowest = std::min(lowest, p.y());
-    for (size_t k = 0; k + 1 < at_key.size(); ++k) {
-      const Vector3d &from = at_key[k], &to = at_key[k + 1];
-      const bool standing = from.y() <= lowest + options.max_height_m && to.y() <= lowest + options.max_height_m &&
-                            Horizontal(to - from) <= options.max_slide_m;
-      if (!standing || frames[k + 1] - frames[k] < 2) continue;
-      FootContact contact{leg.side, leg.key_times_s[k], leg.key_times_s[k + 1], 0.0};
-      const double span = clip.time_s(frames[k + 1]) - clip.time_s(frames[k]);
-      for (int f = frames[k] + 1; f < frames[k + 1]; ++f) {
-        const Vector3d target = from + (clip.time_s(f) - clip.time_s(frames[k])) / span * (to - from);
-        ComputeWorldPose(skeleton, clip, f, pose);
-        // Large corrections are kept: on the captured clips a foot keyed standing at both ends
-        // stands between them (holding only corrections under 5 cm scored worse).
-        contact.max_correction_m = std::max(contact.max_correction_m, (pose.positions[leg.chain.end] - target).norm());
-        const TwoBoneSolution s = SolveTwoBoneIk(skeleton, pose, leg.chain, target, hinge);
-        clip.rotation(f, leg.chain.upper) = s.upper;
-        clip.rotation(f, leg.chain.lower) = s.lower;
-        clip.rotation(f, leg.chain.end) = s.end;
-        ++report.frames_held;
-      }
-      report.max_correction_m = std::max(report.max_correction_m, contact.max_correction_m);
-      report.contacts.push_back(contact);
+    std::vector<Correction> held(clip.num_frames);
+    int heel_off = 0;
+    for (int f = 0; f < clip.num_frames; ++f) {
+      heel_off = heel.down[f] ? 0 : heel_off + 1;
+      const double x = std::min(1.0, double(heel_off) / (fade + 1));
+      if (!pinned[f])
+        held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
+                         x * x * (3.0 - 2.0 * x));
     }
+    const std::vector<Correction> corrections = FadeOut(held, pinned, fade);
+
+    const Vector3d hinge = HingeOf(skeleton, clip, leg.chain);
+    PlantedLeg planted{leg.side, std::vector<double>(clip.num_frames, 0.0)};
+    for (int f = 0; f < clip.num_frames; ++f) {
+      const Correction& c = corrections[f];
+      if (!c.any) continue;
+      ComputeWorldPose(skeleton, clip, f, pose);
+      const Vector3d target = pose.positions[leg.chain.end] + c.move;
+      pose.rotations[leg.chain.end] = c.turn * pose.rotations[leg.chain.end];
+      const TwoBoneSolution s = SolveTwoBoneIk(skeleton, pose, leg.chain, target, hinge);
+      clip.rotation(f, leg.chain.upper) = s.upper;
+      clip.rotation(f, leg.chain.lower) = s.lower;
+      clip.rotation(f, leg.chain.end) = s.end;
+      planted.correction_m[f] = c.move.norm();
+      report.max_correction_m = std::max(report.max_correction_m, planted.correction_m[f]);
+      ++report.frames_held;
+    }
+    for (size_t i = first_contact; i < report.contacts.size(); ++i) {
+      FootContact& contact = report.contacts[i];
+      for (int f = NearestFrame(clip, contact.start_s); f <= NearestFrame(clip, contact.end_s); ++f)
+        contact.max_correction_m = std::max(contact.max_correction_m, planted.correction_m[f]);
+    }
+    report.legs.push_back(std::move(planted));
   }
   return report;
 }

@@ -1,9 +1,16 @@
-// Planted feet between keys. Keyed legs interpolated between their keys (and a root
-// interpolated linearly) make a standing foot slide: where a foot stands low and still at two
-// consecutive keys, it is in contact with the ground all the way between them, so the foot is
-// held on the line between its two keyed positions by two-bone IK of its leg (two_bone_ik.h),
-// frame by frame. At the keys the correction is zero, so keys stay exact and the legs do not
-// pop where a contact starts or ends.
+// Planted feet. Keyed legs interpolated between their keys, a root interpolated linearly and
+// captured texture added on top make a standing foot slide. The contacts are found on the
+// filled motion itself (foot_contacts.h: the heel's and the toe's heights and speeds), and each
+// is held at an anchor on the ground (horizontally; the height stays as filled) by two-bone IK
+// of its leg (two_bone_ik.h), frame by frame:
+// - where the leg is keyed inside a contact, the anchor is the keyed foot (linear between two
+//   keys), so the correction is zero at every key and keys stay exact;
+// - elsewhere the anchor is the foot's mean position over the contact (the least correction);
+// - with the heel down the foot joint is held; with the toe down as well, the foot turns so that
+//   the toe meets its own anchor; with the toe alone down (heel off), the ankle follows the
+//   held toe along the foot as the fill turns it;
+// - the correction fades out over a few frames beyond a contact, never past a key, so nothing
+//   pops where a contact starts or ends.
 #pragma once
 
 #include <string>
@@ -11,6 +18,7 @@
 
 #include "processing/core/motion_clip.h"
 #include "processing/core/skeleton.h"
+#include "processing/motion/foot_contacts.h"
 #include "processing/motion/two_bone_ik.h"
 #include "processing/retargeting/rig_mapping.h"
 
@@ -19,36 +27,44 @@ namespace mocapfill {
 struct LegForPlanting {
   std::string side;    // "left" / "right", for reports
   TwoBoneChain chain;  // thigh, shin, foot
-  // The times (seconds) at which the animator fixed this foot's position: its leg and the
-  // root keyed together.
-  std::vector<double> key_times_s;
+  int toe = -1;        // the foot's toe joint, -1 if the rig has none
+  // Times (seconds) at which one of the chain's joints has a rotation key: the correction must
+  // be zero there.
+  std::vector<double> pinned_times_s;
 };
 
 struct FootPlantOptions {
-  double max_height_m = 0.05;  // a foot standing: within this of its lowest keyed height
-  double max_slide_m = 0.05;   // and moving less than this, horizontally, from one key to the next
+  ContactDetection detection;
+  double fade_s = 0.1;  // the correction fades out over this beyond a contact
 };
 
 struct FootContact {
   std::string side;
-  double start_s = 0.0;  // the two keys that bound the contact
+  std::string part;  // "heel" (the foot joint) or "toe"
+  double start_s = 0.0;
   double end_s = 0.0;
-  double max_correction_m = 0.0;  // largest IK move of the foot inside the contact
+  int keys = 0;                   // keys of the leg inside the contact (they fix its anchor)
+  double max_correction_m = 0.0;  // largest IK move of the foot joint inside the contact
+};
+
+struct PlantedLeg {
+  std::string side;
+  std::vector<double> correction_m;  // per frame: how far the IK moved the foot joint
 };
 
 struct FootPlantReport {
   std::vector<FootContact> contacts;
-  int frames_held = 0;  // leg-frames corrected
+  std::vector<PlantedLeg> legs;
+  int frames_held = 0;  // leg-frames corrected (contacts and fades)
   double max_correction_m = 0.0;
 };
 
 // The times at which every one of `joints` has a rotation key (RotationKeysOf), ascending.
 std::vector<double> JointlyKeyedTimes(const MotionClip& clip, const std::vector<int>& joints);
 
-// A rig's legs for planting (thigh, shin and foot by its humanoid mapping), each with the
-// times at which `sketch` keys the hips and the whole leg together: where the animator fixed
-// the foot.
-std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch, int hips);
+// A rig's legs for planting (thigh, shin, foot and toe by its humanoid mapping), each with the
+// times at which `sketch` keys one of its joints.
+std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch);
 
 // Plants every leg's foot in `clip` (uniform or explicit frame times; every key time is a frame).
 FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlanting>& legs,

@@ -347,7 +347,14 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
     }
   }
   PinPositionTargets(sketch.skeleton, reachable, out);
-  if (options.plant_feet) result.feet = PlantFeet(sketch.skeleton, LegsToPlant(sketch_rig.mapping, clip, hips), options.feet, out);
+  if (options.plant_feet) {
+    // A foot keyed by position is where the animator put it at those times, like a rotation key.
+    std::vector<LegForPlanting> legs = LegsToPlant(sketch_rig.mapping, clip);
+    for (LegForPlanting& leg : legs)
+      for (const PositionTarget& t : targets)
+        if (t.joint == leg.chain.end || t.joint == leg.toe) leg.pinned_times_s.push_back(t.time_s);
+    result.feet = PlantFeet(sketch.skeleton, legs, options.feet, out);
+  }
   out.MakeContinuous();
   out.KeyAllFrames();
   const double retarget_out_s = SecondsSince(stage);

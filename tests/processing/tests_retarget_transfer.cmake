@@ -9,9 +9,10 @@ mocapfill_add_test(retarget_transfer_tests
   LIBS mocapfill_retargeting mocapfill_formats mocapfill_test_bone_directions)
 
 mocapfill_add_test(sketch_fill_tests
-  SLOW [=[^SketchFill\.(PositionKeysHoldTheFeet|PositionKeysHoldTheFeetOnGeno|GenoSketchScoresLikeTheBandaiRig)$]=]
-  CORPUS [=[^SketchFill\.(CmuCorpusSketchHasNoFlips|PositionKeysHoldTheFeetOnGeno|GenoSketchScoresLikeTheBandaiRig)$]=]
+  SLOW [=[^(SketchFill\.(PositionKeysHoldTheFeet|PositionKeysHoldTheFeetOnGeno|GenoSketchScoresLikeTheBandaiRig)|FootPlant\.FilledContactsMatchTheCapture)$]=]
+  CORPUS [=[^(SketchFill\.(CmuCorpusSketchHasNoFlips|PositionKeysHoldTheFeetOnGeno|GenoSketchScoresLikeTheBandaiRig)|FootPlant\.FilledContactsMatchTheCapture)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sketch_fill_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/foot_plant_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/../support/sparse_sketch.cc
   LIBS mocapfill_test_default_db mocapfill_test_gltf mocapfill_sketch_fill mocapfill_evaluation mocapfill_formats mocapfill_mfdb mocapfill_gltf mocapfill_test_tinygltf
        mocapfill_test_bone_directions)

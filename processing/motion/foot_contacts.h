@@ -1,0 +1,29 @@
+// Foot contacts found on a motion itself. A foot (or toe) joint on the ground stands near its
+// lowest height and barely moves horizontally. Both cues are needed on filled motion: between
+// keys the filled foot slides (which is what planting removes), so a speed threshold strict
+// enough for capture misses most contacts, and height alone would also take a swing foot
+// skimming the floor. The thresholds are therefore loose on speed and tight on height.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace mocapfill {
+
+struct ContactDetection {
+  double max_height_m = 0.03;      // above the joint's floor
+  double max_speed_m_per_s = 0.6;  // horizontal
+  double max_gap_s = 0.14;         // two contacts this close (last to first frame) are one
+  double min_duration_s = 0.09;    // shorter contacts (first to last frame) are dropped
+};
+
+// Per frame, whether the joint whose world positions are `track` (one per time of `times_s`,
+// ascending) touches the ground, its floor being at height `floor_y` (metres, +Y up).
+std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, const std::vector<double>& times_s,
+                                 double floor_y, const ContactDetection& options);
+
+// Maximal runs of true frames: [first, last] pairs, ascending.
+std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact);
+
+}  // namespace mocapfill

@@ -1,0 +1,163 @@
+// Planted feet (processing/motion/foot_plant.h) and the contacts they hold
+// (processing/motion/foot_contacts.h), on captured walks and the shipped sketch.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "formats/motion_io.h"
+#include "processing/core/kinematics.h"
+#include "processing/database/motion_database_builder.h"
+#include "processing/motion/foot_contacts.h"
+#include "processing/motion/foot_plant.h"
+#include "processing/motion/key_fidelity.h"
+#include "processing/sketch_fill/sketch_fill.h"
+#include "tests/support/default_db.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill {
+namespace {
+
+constexpr double kKeyToleranceDeg = 0.01;
+
+std::vector<Eigen::Vector3d> TrackOf(const Skeleton& skeleton, const MotionClip& clip, int joint) {
+  std::vector<Eigen::Vector3d> track;
+  WorldPose pose;
+  for (int f = 0; f < clip.num_frames; ++f) {
+    ComputeWorldPose(skeleton, clip, f, pose);
+    track.push_back(pose.positions[joint]);
+  }
+  return track;
+}
+
+std::vector<double> TimesOf(const MotionClip& clip) {
+  std::vector<double> times;
+  for (int f = 0; f < clip.num_frames; ++f) times.push_back(clip.time_s(f));
+  return times;
+}
+
+double Lowest(const std::vector<Eigen::Vector3d>& track) {
+  double lowest = INFINITY;
+  for (const Eigen::Vector3d& p : track) lowest = std::min(lowest, p.y());
+  return lowest;
+}
+
+double HorizontalSpeed(const std::vector<Eigen::Vector3d>& track, const MotionClip& clip, int f) {
+  const Eigen::Vector3d d = track[f + 1] - track[f];
+  return std::hypot(d.x(), d.z()) / (clip.time_s(f + 1) - clip.time_s(f));
+}
+
+const char* const kFeet[] = {"Foot_L", "Toes_L", "Foot_R", "Toes_R"};
+
+// On a captured walk, every frame where a foot joint stands still (the LaFAN1 rule: under
+// 4.24 cm/s) is found by the detector, which looks at height and a looser speed only.
+TEST(FootContacts, CapturedWalkStillFramesAreContacts) {
+  Result<Scene> walk = ImportFile(testing::FixturePath("default_db/dataset-1_walk_normal_001.bvh"));
+  ASSERT_TRUE(walk.ok()) << walk.status().message();
+  const MotionClip& clip = walk->clips[0];
+  int still = 0, found = 0, detected = 0;
+  for (const char* name : kFeet) {
+    const int joint = *walk->skeleton.Find(name);
+    const std::vector<Eigen::Vector3d> track = TrackOf(walk->skeleton, clip, joint);
+    const std::vector<bool> contact = DetectContacts(track, TimesOf(clip), Lowest(track), {});
+    for (int f = 0; f + 1 < clip.num_frames; ++f) {
+      const bool is_still = (track[f + 1] - track[f]).norm() / (clip.time_s(f + 1) - clip.time_s(f)) < 0.0424;
+      still += is_still;
+      found += is_still && contact[f];
+      detected += contact[f];
+    }
+  }
+  std::printf("captured walk: %d still foot-frames, %d of them detected; %d detected in all\n", still, found, detected);
+  ASSERT_GT(still, 100);
+  EXPECT_GE(found, 0.95 * still);
+  EXPECT_LT(detected, 0.7 * 4 * clip.num_frames);  // swing frames are not contacts
+}
+
+// The contacts the planter finds on a fill (the legs keyed every 8 frames, free feet) are those
+// the same detector finds on the capture the sketch was made from, on at least 90 % of frames,
+// with a database that covers walking (the corpus without the sketch's style, as in
+// leave-one-style-out; the 3-style default database textures these legs so freely that
+// their feet leave the ground between keys: 57 % there).
+TEST(FootPlant, FilledContactsMatchTheCapture) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  MotionDatabaseBuilder builder;
+  for (const std::string& path : testing::CorpusFiles("bandai-namco-1/data", ".bvh")) {
+    if (path.find("_proud_") != std::string::npos) continue;
+    Result<Scene> clip = ImportFile(path);
+    ASSERT_TRUE(clip.ok()) << clip.status().message();
+    ASSERT_TRUE(builder.Add(clip->skeleton, clip->clips[0], {}).ok());
+  }
+  Result<MotionDatabase> database = builder.Build();
+  ASSERT_TRUE(database.ok()) << database.status().message();
+  Result<Scene> truth = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_002.bvh"));
+  Result<Scene> sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  ASSERT_TRUE(truth.ok() && sketch.ok());
+  SketchFillOptions options;
+  options.plant_feet = false;
+  Result<SketchFillResult> filled = FillSketch(*sketch, *database, options);
+  ASSERT_TRUE(filled.ok()) << filled.status().message();
+  const MotionClip& out = filled->scene.clips[0];
+  const MotionClip& capture = truth->clips[0];
+  const int frames = std::min(out.num_frames, capture.num_frames);
+  ASSERT_GE(frames, 300);
+  int agree = 0, total = 0;
+  for (const char* name : kFeet) {
+    const int in_out = *filled->scene.skeleton.Find(name), in_capture = *truth->skeleton.Find(name);
+    const std::vector<Eigen::Vector3d> a = TrackOf(filled->scene.skeleton, out, in_out);
+    const std::vector<Eigen::Vector3d> b = TrackOf(truth->skeleton, capture, in_capture);
+    const std::vector<bool> ca = DetectContacts(a, TimesOf(out), Lowest(a), {});
+    const std::vector<bool> cb = DetectContacts(b, TimesOf(capture), Lowest(b), {});
+    for (int f = 0; f < frames; ++f) agree += ca[f] == cb[f];
+    total += frames;
+  }
+  std::printf("contacts of the fill agree with the capture's on %.1f %% of foot-frames\n", 100.0 * agree / total);
+  EXPECT_GE(agree, 0.9 * total);
+}
+
+// --feet plant (the default): during every heel contact the planter reports, the foot joint
+// stands (mean horizontal speed under 2 cm/s; the free fill slides), keys stay exact, the
+// correction is zero at every key, and the legs do not pop (no larger frame-to-frame turn than
+// the free fill's plus 5 degrees).
+TEST(FootPlant, PlantedFeetStandDuringContacts) {
+  Result<Scene> sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  ASSERT_TRUE(sketch.ok());
+  SketchFillOptions free_options;
+  free_options.plant_feet = false;
+  Result<SketchFillResult> free_fill = FillSketch(*sketch, testing::DefaultDb(), free_options);
+  Result<SketchFillResult> planted = FillSketch(*sketch, testing::DefaultDb(), {});
+  ASSERT_TRUE(free_fill.ok() && planted.ok());
+  EXPECT_TRUE(free_fill->feet.contacts.empty());
+  ASSERT_GE(planted->feet.contacts.size(), 10u);
+  EXPECT_LT(planted->key_error_max_deg, kKeyToleranceDeg);
+  const Skeleton& s = planted->scene.skeleton;
+  const MotionClip& out = planted->scene.clips[0];
+  const MotionClip& loose = free_fill->scene.clips[0];
+  double planted_sum = 0.0, free_sum = 0.0;
+  int frames = 0;
+  for (const FootContact& c : planted->feet.contacts) {
+    if (c.part != "heel") continue;
+    const int foot = *s.Find(c.side == "left" ? "Foot_L" : "Foot_R");
+    const std::vector<Eigen::Vector3d> held = TrackOf(s, out, foot), slid = TrackOf(s, loose, foot);
+    for (int f = NearestFrame(out, c.start_s); f < NearestFrame(out, c.end_s); ++f) {
+      planted_sum += HorizontalSpeed(held, out, f);
+      free_sum += HorizontalSpeed(slid, loose, f);
+      ++frames;
+    }
+  }
+  ASSERT_GT(frames, 50);
+  std::printf("heel contacts: %d frames, foot speed %.2f cm/s planted, %.2f cm/s free; %d leg-frames corrected\n",
+              frames, 100.0 * planted_sum / frames, 100.0 * free_sum / frames, planted->feet.frames_held);
+  EXPECT_LT(planted_sum / frames, 0.02);
+  EXPECT_GT(free_sum / frames, 0.05);  // the free fill did slide: the test can fail
+  EXPECT_LT(planted->max_frame_jump_deg, free_fill->max_frame_jump_deg + 5.0);
+  ASSERT_EQ(planted->feet.legs.size(), 2u);
+  for (const PlantedLeg& leg : planted->feet.legs) {
+    ASSERT_EQ(static_cast<int>(leg.correction_m.size()), out.num_frames);
+    const int thigh = *s.Find(leg.side == "left" ? "UpperLeg_L" : "UpperLeg_R");
+    for (double t : RotationKeysOf(sketch->clips[0], thigh).times_s)
+      EXPECT_EQ(leg.correction_m[NearestFrame(out, t)], 0.0) << leg.side << " at " << t << " s";
+  }
+}
+
+}  // namespace
+}  // namespace mocapfill
