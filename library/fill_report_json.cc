@@ -66,7 +66,8 @@ nlohmann::ordered_json ReportObject(const SketchFillResult& result, const std::s
   nlohmann::ordered_json legs = nlohmann::ordered_json::array();
   for (const PlantedLeg& leg : result.feet.legs) legs.push_back({{"foot", leg.side}, {"correction_m", leg.correction_m}});
   out["feet"] = {{"contacts", contacts}, {"frames_held", result.feet.frames_held},
-                 {"max_correction_m", result.feet.max_correction_m}, {"correction_per_frame", legs}};
+                 {"max_correction_m", result.feet.max_correction_m}, {"contacts_skipped", result.feet.contacts_skipped},
+                 {"correction_per_frame", legs}};
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (const JointFillInfo& j : result.joints)
     joints.push_back({{"joint", j.name}, {"kind", j.kind}, {"keys", j.keys},

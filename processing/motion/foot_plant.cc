@@ -82,18 +82,31 @@ struct JointContacts {
 };
 
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<bool>& pinned,
-                           const ContactDetection& detection, const std::string& side, const std::string& part,
-                           std::vector<FootContact>& contacts) {
+                           const FootPlantOptions& options, const std::string& side, const std::string& part,
+                           FootPlantReport& report) {
+  const ContactDetection& detection = options.detection;
   std::vector<double> times(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
   JointContacts out{DetectContacts(track, times, FloorOf(track, pinned), detection),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
+    double farthest = 0.0;
+    for (int f = first; f <= last; ++f) {
+      const Vector3d d = anchors[f - first] - track[f];
+      farthest = std::max(farthest, std::hypot(d.x(), d.z()));
+    }
+    // A foot this far from where it would be held is not standing (a swing foot passing low
+    // and slow near a key): holding it would drag the leg and pop where the hold ends.
+    if (farthest > options.max_correction_m) {
+      std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
+      ++report.contacts_skipped;
+      continue;
+    }
     std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
     FootContact c{side, part, times[first], times[last], 0, 0.0};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
-    contacts.push_back(c);
+    report.contacts.push_back(c);
   }
   return out;
 }
@@ -220,10 +233,10 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
     const std::vector<bool> pinned = PinnedFrames(clip, leg);
     const size_t first_contact = report.contacts.size();
     const JointContacts heel =
-        FindContacts(clip, tracks.ankle, pinned, options.detection, leg.side, "heel", report.contacts);
+        FindContacts(clip, tracks.ankle, pinned, options, leg.side, "heel", report);
     JointContacts toe;
     if (leg.toe >= 0) {
-      toe = FindContacts(clip, tracks.toe, pinned, options.detection, leg.side, "toe", report.contacts);
+      toe = FindContacts(clip, tracks.toe, pinned, options, leg.side, "toe", report);
       AnchorToesOnHeels(pinned, tracks, heel, toe);
     }
     std::vector<Correction> held(clip.num_frames);

@@ -36,6 +36,7 @@ struct LegForPlanting {
 struct FootPlantOptions {
   ContactDetection detection;
   double fade_s = 0.1;  // the correction fades out over this beyond a contact
+  double max_correction_m = 0.1;  // contacts needing a larger move are not held
 };
 
 struct FootContact {
@@ -56,6 +57,7 @@ struct FootPlantReport {
   std::vector<FootContact> contacts;
   std::vector<PlantedLeg> legs;
   int frames_held = 0;  // leg-frames corrected (contacts and fades)
+  int contacts_skipped = 0;  // found but needing more than max_correction_m
   double max_correction_m = 0.0;
 };
 

@@ -191,7 +191,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       if (s.keyed[c] && !fixed.empty()) keyed_channels.push_back(c);
     Eigen::MatrixXd source = out;
     const GroupResult r = SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), keyed_channels, 1, source, timer);
-    TextureChannels(s.values, source, keyed_channels, TextureBandCount(s.key_spacing, rate), rate, out);
+    TextureChannels(s.values, source, keyed_channels, TextureBandCount(s.key_spacing, rate), rate, out,
+                    options.texture_finest_band);
     if (options.repin_keys) RepinKeys(s.values, s.key_frames, keyed_channels, out);
     timer.Mark("texture");
   }

@@ -16,6 +16,8 @@ Status RangeError(const char* field, double value, const char* range) {
 Status FragmentFillOptions::Validate() const {
   if (candidates < 1 || candidates > 1024) return RangeError("candidates", candidates, "[1, 1024]");
   if (blend < 1 || blend > candidates) return RangeError("blend", blend, "[1, candidates]");
+  if (texture_finest_band < 0 || texture_finest_band > 16)
+    return RangeError("texture_finest_band", texture_finest_band, "[0, 16]");
   if (!(fragment_band_hz > 0.0) || !std::isfinite(fragment_band_hz))
     return RangeError("fragment_band_hz", fragment_band_hz, "(0, inf)");
   if (!(match_band_hz > 0.0) || !std::isfinite(match_band_hz))

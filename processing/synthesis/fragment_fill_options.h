@@ -63,6 +63,9 @@ struct FragmentFillOptions {
   JoinCriterion join = JoinCriterion::kCostMatrix;
   MatchSignal match_signal = MatchSignal::kLowPass;
   bool texture = true;      // add the chosen fragments' high bands to keyed channels
+  // Texture bands start here: 1 leaves out the finest (above 7.5 Hz at 30 Hz), another take's
+  // foot impacts and tremor, which made the fill jerkier than capture (texture_channels.h).
+  int texture_finest_band = 1;
   bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
   int candidates = 128;     // K best candidates kept per fragment
   int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)

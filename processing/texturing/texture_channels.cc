@@ -15,8 +15,9 @@ int TextureBandCount(int key_spacing, double rate_hz) {
 }
 
 void TextureChannels(const Eigen::MatrixXd& smooth, const Eigen::MatrixXd& source, const std::vector<int>& channels,
-                     int texture_bands, double rate_hz, Eigen::MatrixXd& out) {
-  if (texture_bands < 1 || channels.empty() || smooth.rows() < 2) return;
+                     int texture_bands, double rate_hz, Eigen::MatrixXd& out, int finest_band) {
+  finest_band = std::max(0, finest_band);
+  if (texture_bands <= finest_band || channels.empty() || smooth.rows() < 2) return;
   Eigen::MatrixXd a(smooth.rows(), channels.size()), b(source.rows(), channels.size());
   for (size_t i = 0; i < channels.size(); ++i) {
     a.col(i) = smooth.col(channels[i]);
@@ -27,7 +28,8 @@ void TextureChannels(const Eigen::MatrixXd& smooth, const Eigen::MatrixXd& sourc
   Result<Pyramid> pa = BuildPyramid(a, rate_hz, options);
   Result<Pyramid> pb = BuildPyramid(b, rate_hz, options);
   if (!pa.ok() || !pb.ok()) return;
-  const Eigen::MatrixXd textured = pa->residual + (b - pb->residual);  // G_kt(smooth) + high bands(source)
+  Eigen::MatrixXd textured = pa->residual + (b - pb->residual);  // G_kt(smooth) + high bands(source)
+  for (int k = 0; k < finest_band; ++k) textured -= pb->bands[k];
   for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = textured.col(i);
 }
 

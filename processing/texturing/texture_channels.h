@@ -14,11 +14,13 @@ namespace mocapfill {
 // bands whose peak exceeds rate_hz / (2 * key_spacing). At 30 Hz with keys every 8 frames: 3.
 int TextureBandCount(int key_spacing, double rate_hz);
 
-// Channel a of `out` becomes G_kt(smooth) + sum_{k < kt} L_k(source) for every listed a, with
-// kt = texture_bands and pyramids over the whole clip; `smooth` and `source` are frames x
-// channels with the same rows. Does nothing for texture_bands < 1, no channel or fewer than
-// two frames.
+// Channel a of `out` becomes G_kt(smooth) + sum_{finest_band <= k < kt} L_k(source) for every
+// listed a, with kt = texture_bands and pyramids over the whole clip; `smooth` and `source` are
+// frames x channels with the same rows. finest_band > 0 leaves the source's finest bands out:
+// the finest detail of another take is uncorrelated with the motion being filled, so it adds
+// error and jerk rather than likeness. Does nothing for texture_bands <= finest_band, no
+// channel or fewer than two frames.
 void TextureChannels(const Eigen::MatrixXd& smooth, const Eigen::MatrixXd& source, const std::vector<int>& channels,
-                     int texture_bands, double rate_hz, Eigen::MatrixXd& out);
+                     int texture_bands, double rate_hz, Eigen::MatrixXd& out, int finest_band = 0);
 
 }  // namespace mocapfill
