@@ -21,12 +21,15 @@ double HorizontalSpeed(const std::vector<Eigen::Vector3d>& track, const std::vec
 }  // namespace
 
 std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, const std::vector<double>& times_s,
-                                 double floor_y, const ContactDetection& options) {
+                                 double floor_y, const ContactDetection& options,
+                                 const std::vector<Eigen::Vector3d>* body) {
   std::vector<bool> contact(track.size(), false);
   const int n = static_cast<int>(track.size());
   for (int f = 0; f < n; ++f)
     contact[f] = track[f].y() <= floor_y + options.max_height_m &&
-                 HorizontalSpeed(track, times_s, f) <= options.max_speed_m_per_s;
+                 HorizontalSpeed(track, times_s, f) <=
+                     std::max(options.max_speed_m_per_s,
+                              body ? options.max_speed_share_of_body * HorizontalSpeed(*body, times_s, f) : 0.0);
   // A contact flickering off for a frame or two is one contact; a blip of a frame or two is
   // none. Either would make the held foot jump from one anchor to another.
   std::vector<std::pair<int, int>> runs = ContactRuns(contact);

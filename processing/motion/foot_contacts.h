@@ -14,14 +14,19 @@ namespace mocapfill {
 struct ContactDetection {
   double max_height_m = 0.03;      // above the joint's floor
   double max_speed_m_per_s = 0.6;  // horizontal
+  // With a body track: the speed limit rises to this share of the body's horizontal speed
+  // (a fast body's stance foot, synthesised or textured, slides faster).
+  double max_speed_share_of_body = 0.5;
   double max_gap_s = 0.14;         // two contacts this close (last to first frame) are one
   double min_duration_s = 0.09;    // shorter contacts (first to last frame) are dropped
 };
 
 // Per frame, whether the joint whose world positions are `track` (one per time of `times_s`,
 // ascending) touches the ground, its floor being at height `floor_y` (metres, +Y up).
+// `body` (optional): the hips' world positions at the same times.
 std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, const std::vector<double>& times_s,
-                                 double floor_y, const ContactDetection& options);
+                                 double floor_y, const ContactDetection& options,
+                                 const std::vector<Eigen::Vector3d>* body = nullptr);
 
 // Maximal runs of true frames: [first, last] pairs, ascending.
 std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact);

@@ -15,7 +15,7 @@ using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
 struct LegTracks {
-  std::vector<Vector3d> ankle, toe;
+  std::vector<Vector3d> ankle, toe, hips;
 };
 
 LegTracks TrackLeg(const Skeleton& skeleton, const MotionClip& clip, const LegForPlanting& leg) {
@@ -24,6 +24,7 @@ LegTracks TrackLeg(const Skeleton& skeleton, const MotionClip& clip, const LegFo
   for (int f = 0; f < clip.num_frames; ++f) {
     ComputeWorldPose(skeleton, clip, f, pose);
     tracks.ankle.push_back(pose.positions[leg.chain.end]);
+    tracks.hips.push_back(pose.positions[skeleton.parent(leg.chain.upper) >= 0 ? skeleton.parent(leg.chain.upper) : leg.chain.upper]);
     if (leg.toe >= 0) tracks.toe.push_back(pose.positions[leg.toe]);
   }
   return tracks;
@@ -81,13 +82,14 @@ struct JointContacts {
   std::vector<Vector3d> anchor;  // per frame, where down
 };
 
-JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<bool>& pinned,
+JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
+                           const std::vector<bool>& pinned,
                            const FootPlantOptions& options, const std::string& side, const std::string& part,
                            FootPlantReport& report) {
   const ContactDetection& detection = options.detection;
   std::vector<double> times(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
-  JointContacts out{DetectContacts(track, times, FloorOf(track, pinned), detection),
+  JointContacts out{DetectContacts(track, times, FloorOf(track, pinned), detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
@@ -233,10 +235,10 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
     const std::vector<bool> pinned = PinnedFrames(clip, leg);
     const size_t first_contact = report.contacts.size();
     const JointContacts heel =
-        FindContacts(clip, tracks.ankle, pinned, options, leg.side, "heel", report);
+        FindContacts(clip, tracks.ankle, tracks.hips, pinned, options, leg.side, "heel", report);
     JointContacts toe;
     if (leg.toe >= 0) {
-      toe = FindContacts(clip, tracks.toe, pinned, options, leg.side, "toe", report);
+      toe = FindContacts(clip, tracks.toe, tracks.hips, pinned, options, leg.side, "toe", report);
       AnchorToesOnHeels(pinned, tracks, heel, toe);
     }
     std::vector<Correction> held(clip.num_frames);
