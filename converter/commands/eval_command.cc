@@ -52,6 +52,7 @@ nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
           {"jitter_ratio", m.jitter_ratio},
           {"foot_skate_cm_per_s", m.foot_skate_cm_per_s},
           {"foot_skate_share", m.foot_skate_share},
+          {"foot_contact_frames", m.foot_contact_frames},
           {"key_error_mean_deg", m.key_error_mean_deg},
           {"key_error_max_deg", m.key_error_max_deg},
           {"bone_length_error", m.bone_length_error}};

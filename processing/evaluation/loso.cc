@@ -28,8 +28,6 @@ void Accumulate(FillMetrics& sum, const FillMetrics& m, double w) {
   sum.angle_unkeyed_deg += w * m.angle_unkeyed_deg;
   sum.npss += w * m.npss;
   sum.jitter_ratio += w * m.jitter_ratio;
-  sum.foot_skate_cm_per_s += w * m.foot_skate_cm_per_s;
-  sum.foot_skate_share += w * m.foot_skate_share;
   sum.key_error_mean_deg += w * m.key_error_mean_deg;
   sum.key_error_max_deg = std::max(sum.key_error_max_deg, m.key_error_max_deg);  // worst, not mean
   sum.bone_length_error += w * m.bone_length_error;
@@ -132,6 +130,18 @@ std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const st
           row.fill_seconds += w * s.fill_seconds;
           row.seconds_per_s += w * s.seconds_per_s;
         }
+      long contact_frames = 0;
+      for (const ClipScore& s : scores)
+        if (s.method == method.name && (row.category == "all" || s.category == row.category)) {
+          contact_frames += s.metrics.foot_contact_frames;
+          row.mean.foot_skate_cm_per_s += s.metrics.foot_skate_cm_per_s * s.metrics.foot_contact_frames;
+          row.mean.foot_skate_share += s.metrics.foot_skate_share * s.metrics.foot_contact_frames;
+        }
+      row.mean.foot_contact_frames = contact_frames;
+      if (contact_frames > 0) {
+        row.mean.foot_skate_cm_per_s /= contact_frames;
+        row.mean.foot_skate_share /= contact_frames;
+      }
       rows.push_back(row);
     }
   return rows;

@@ -81,6 +81,7 @@ void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled
     }
   m.foot_skate_cm_per_s = contacts ? sum / contacts : 0.0;
   m.foot_skate_share = contacts ? double(skating) / contacts : 0.0;
+  m.foot_contact_frames = contacts;
 }
 
 std::vector<std::vector<double>> GlobalQuaternionSignals(const Posed& posed, const std::vector<int>& joints,

@@ -26,8 +26,11 @@ struct FillMetrics {
   // Mean jerk of filled joint positions over the ground truth's (joints below the hips).
   double jitter_ratio = 0.0;
   // Horizontal foot speed (cm/s) on the truth's contact frames, and the share above 2 cm/s.
+  // Summaries pool them over contact frames (a clip with one contact frame must not weigh as
+  // much as one with hundreds), so foot_contact_frames is kept.
   double foot_skate_cm_per_s = 0.0;
   double foot_skate_share = 0.0;
+  long foot_contact_frames = 0;
   // Geodesic angle (deg) between output and sketch at keyed (joint, frame) pairs.
   double key_error_mean_deg = 0.0;
   double key_error_max_deg = 0.0;
