@@ -31,7 +31,7 @@ struct EvalArgs {
   std::string methods = "mean,nn,fragment,hierarchical";
   std::string folds, contents, save_sketches;
   bool json = false;
-  std::string feet = "free";
+  std::string feet = "plant";  // as fill does
   NodeFlags flags;  // the fill methods' options (graph/nodes/fill_schema.h), except the method
 };
 
@@ -247,7 +247,7 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--folds", args->folds, "Only these folds (comma-separated label values)");
   command->add_option("--contents", args->contents, "Only test clips with these contents (comma-separated)");
   command->add_flag("--json", args->json, "Print JSON (summary and per clip) instead of the table");
-  command->add_option("--feet", args->feet, "plant: hold feet that stand at two keys between them (as fill does)")
+  command->add_option("--feet", args->feet, "plant: hold the feet where they touch the ground (as fill does); free: leave them")
       ->check(CLI::IsMember({"plant", "free"}))
       ->capture_default_str();
   command->add_option("--save-sketches", args->save_sketches,
