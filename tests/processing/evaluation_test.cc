@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "formats/motion_io.h"
+#include "processing/evaluation/loso.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
 #include "processing/core/rotation.h"
@@ -106,6 +107,39 @@ TEST(FillMetrics, NpssIsZeroForEqualSpectraAndGrowsWithDifference) {
   EXPECT_DOUBLE_EQ(Npss(a, a), 0.0);
   EXPECT_GT(Npss(a, b), 0.0);
   EXPECT_GT(Npss(a, c), Npss(a, b));
+}
+
+}  // namespace
+}  // namespace mocapfill
+
+namespace mocapfill {
+namespace {
+
+// Summaries pool foot skating over contact frames: a run with few contact frames does not
+// weigh as much as a walk with hundreds (the per-clip average would let it).
+TEST(FillMetrics, SummariesPoolFootSkatingOverContactFrames) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  std::vector<ClipScore> scores;
+  for (const char* name : {"dataset-1_walk_normal_001", "dataset-1_run_normal_001"}) {
+    Result<Scene> scene = ImportFile(testing::DataPath(std::string("bandai-namco-1/data/") + name + ".bvh"));
+    ASSERT_TRUE(scene.ok()) << scene.status().message();
+    const MotionClip& truth = scene->clips[0];
+    const MotionClip sketch = *MakeSketch(scene->skeleton, truth, LegSpec());
+    Result<FillMetrics> m = ScoreFill(scene->skeleton, truth, sketch, sketch, *scene->skeleton.Find("Hips"));
+    ASSERT_TRUE(m.ok());
+    scores.push_back({name, "normal", "locomotion", "sketch", *m});
+  }
+  const FillMetrics& walk = scores[0].metrics;
+  const FillMetrics& run = scores[1].metrics;
+  ASSERT_GT(walk.foot_contact_frames, 10 * run.foot_contact_frames);  // the case the pooling is for
+  const std::vector<SummaryRow> rows = Summarise(scores, {{"sketch", {}}});
+  ASSERT_FALSE(rows.empty());
+  const long frames = walk.foot_contact_frames + run.foot_contact_frames;
+  EXPECT_EQ(rows[0].mean.foot_contact_frames, frames);
+  EXPECT_NEAR(rows[0].mean.foot_skate_cm_per_s,
+              (walk.foot_skate_cm_per_s * walk.foot_contact_frames + run.foot_skate_cm_per_s * run.foot_contact_frames) / frames,
+              1e-9);
+  EXPECT_GT(std::abs(rows[0].mean.foot_skate_cm_per_s - 0.5 * (walk.foot_skate_cm_per_s + run.foot_skate_cm_per_s)), 0.1);
 }
 
 }  // namespace
