@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 
 constexpr double kKeyToleranceDeg = 0.01;  // keys below 0.01 degrees at their times
 
+using testing::BandaiDbWithout;
 using testing::DefaultDb;
 
 const std::vector<std::string> kBandaiLegs = {"Hips",       "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L",
@@ -240,22 +241,6 @@ double UpperBodyErrorDeg(const Scene& rig_scene, const MotionClip& truth, const 
   Result<PreparedRig> rig = PrepareRig(rig_scene);
   EXPECT_TRUE(rig.ok()) << rig.status().message();
   return testing::MeanDirectionErrorDeg(rig->rig, truth, rig->rig, filled, testing::UpperBodySegments());
-}
-
-// The Bandai-Namco database without the style of the test clip (leave-one-style-out).
-const MotionDatabase& BandaiDbWithout(const std::string& style) {
-  static std::map<std::string, MotionDatabase> cache;
-  if (auto it = cache.find(style); it != cache.end()) return it->second;
-  MotionDatabaseBuilder builder;
-  for (const std::string& f : testing::CorpusFiles("bandai-namco-1/data", ".bvh")) {
-    if (f.find("_" + style + "_") != std::string::npos) continue;
-    Result<Scene> scene = ImportFile(f);
-    EXPECT_TRUE(scene.ok()) << scene.status().message();
-    EXPECT_TRUE(builder.Add(scene->skeleton, scene->clips[0], {{"file", f}}).ok());
-  }
-  Result<MotionDatabase> built = builder.Build();
-  EXPECT_TRUE(built.ok()) << built.status().message();
-  return cache.emplace(style, std::move(*built)).first->second;
 }
 
 // A sketch on the Geno character (hips and legs keyed every 8 frames, made by

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "formats/motion_io.h"
 #include "processing/database/motion_database_builder.h"
@@ -29,6 +30,21 @@ const MotionDatabase& DefaultDb() {
     return std::move(*built);
   }();
   return db;
+}
+
+const MotionDatabase& BandaiDbWithout(const std::string& style) {
+  static std::map<std::string, MotionDatabase> cache;
+  if (auto it = cache.find(style); it != cache.end()) return it->second;
+  MotionDatabaseBuilder builder;
+  for (const std::string& f : CorpusFiles("bandai-namco-1/data", ".bvh")) {
+    if (f.find("_" + style + "_") != std::string::npos) continue;
+    Result<Scene> scene = ImportFile(f);
+    EXPECT_TRUE(scene.ok()) << scene.status().message();
+    EXPECT_TRUE(builder.Add(scene->skeleton, scene->clips[0], {{"file", f}}).ok());
+  }
+  Result<MotionDatabase> built = builder.Build();
+  EXPECT_TRUE(built.ok()) << built.status().message();
+  return cache.emplace(style, std::move(*built)).first->second;
 }
 
 MotionClip ShippedSketchOnDefaultDbRig() {

@@ -1,6 +1,8 @@
 // The embedded default database (fixtures/default_db), built once per test program.
 #pragma once
 
+#include <string>
+
 #include "processing/core/motion_clip.h"
 #include "processing/core/motion_database.h"
 
@@ -12,5 +14,9 @@ const MotionDatabase& DefaultDb();
 // frames, on the database's own rig) as a clip on the default database's skeleton, keys kept:
 // the input of the fill methods below FillSketch.
 MotionClip ShippedSketchOnDefaultDbRig();
+
+// The shared corpus's Bandai-Namco database without the clips of one style, as a fold of
+// leave-one-style-out sees it (built once per style and test program).
+const MotionDatabase& BandaiDbWithout(const std::string& style);
 
 }  // namespace mocapfill::testing
