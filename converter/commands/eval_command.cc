@@ -33,6 +33,7 @@ struct EvalArgs {
   bool json = false;
   bool by_fold = false;
   std::string split = "both";
+  bool split_given = false;  // --split on the command line (it has no meaning with --against)
   std::string feet = "free";
   NodeFlags flags;  // the fill methods' options (graph/nodes/fill_schema.h), except the method
 };
@@ -111,6 +112,10 @@ int RunEval(EvalArgs& args) {
     return kExitUsage;
   }
   // The halves are leave-one-out folds; a fixed database has none, so --against runs unsplit.
+  if (!args.against.empty() && args.split_given) {
+    PrintError("--split: not used with --against (a fixed database has no folds to split)");
+    return kExitUsage;
+  }
   options.split = args.against.empty() ? *split : Split::kNone;
   const graph::NodeTypeSpec spec = FillMethodSpec();
   Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
@@ -200,11 +205,11 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--methods", args->methods, "Methods to score: mean, nn, fragment, hierarchical, pca, hybrid "
                                                   "(PCA models are built from each fold's database only)")
       ->capture_default_str();
-  command->add_option("--split", args->split,
+  CLI::Option* split = command->add_option("--split", args->split,
                       "Split-half protocol: the fold values sorted by name and dealt alternately into a tuning "
                       "half (leave-one-out inside itself) and a reporting half (leave-one-out against all other "
                       "folds); tuning, reporting, both (both halves, one table each) or none (plain "
-                      "leave-one-out over every fold). Not used with --against")
+                      "leave-one-out over every fold). Not with --against")
       ->capture_default_str();
   command->add_flag("--by-fold", args->by_fold,
                     "Also print every (fold, category) cell: each method's mean and its difference to mean");
@@ -230,7 +235,10 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
       "      --against fixtures/default_db --methods mean,hierarchical\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --scenario upper-body \\\n"
       "      --methods mean,hierarchical");
-  command->callback([args, &action] { action = [args] { return RunEval(*args); }; });
+  command->callback([args, split, &action] {
+    args->split_given = split->count() > 0;
+    action = [args] { return RunEval(*args); };
+  });
 }
 
 }  // namespace mocapfill::cli

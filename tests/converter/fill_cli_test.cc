@@ -226,7 +226,8 @@ TEST(EvalCli, SplitHalvesCarryIntervalsFoldCellsAndPenetration) {
 }
 
 // The table names both halves and their styles, shows intervals and the cells above mean, and
-// with --by-fold a row per fold; a bad --split value is a usage error naming the allowed values.
+// with --by-fold a row per fold; a bad --split value is a usage error naming the allowed values,
+// and so is --split with --against.
 TEST(EvalCli, TablePrintsBothHalvesAndBadSplitIsAUsageError) {
   const std::string db = testing::FixturePath("default_db");
   const RunResult run = RunCli("-q eval --db " + db + " --contents run --methods mean,hierarchical --by-fold");
@@ -242,6 +243,9 @@ TEST(EvalCli, TablePrintsBothHalvesAndBadSplitIsAUsageError) {
   EXPECT_NE(bad.output.find("--split: unknown value 'halves' (allowed: none, tuning, reporting, both)"),
             std::string::npos)
       << bad.output;
+  const RunResult fixed = RunCli("eval --db " + db + " --against " + db + " --split tuning");
+  EXPECT_EQ(fixed.exit_code, 1) << fixed.output;
+  EXPECT_NE(fixed.output.find("--split: not used with --against"), std::string::npos) << fixed.output;
 }
 
 // eval --against: every run clip of the default database tested against the whole default
