@@ -3,10 +3,10 @@
 // printed as a table (or JSON).
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "converter/commands.h"
+#include "converter/commands/eval_report.h"
 #include "converter/console.h"
 #include "converter/exit_codes.h"
 #include "converter/node_flags.h"
@@ -31,6 +31,9 @@ struct EvalArgs {
   std::string methods = "mean,nn,fragment,hierarchical";
   std::string folds, contents, save_sketches;
   bool json = false;
+  bool by_fold = false;
+  std::string split = "both";
+  bool split_given = false;  // --split on the command line (it has no meaning with --against)
   std::string feet = "plant";  // as fill does
   NodeFlags flags;  // the fill methods' options (graph/nodes/fill_schema.h), except the method
 };
@@ -42,69 +45,6 @@ graph::NodeTypeSpec FillMethodSpec() {
   spec.type = "fill";
   spec.options = graph::FillMethodOptionSpecs();
   return spec;
-}
-
-nlohmann::ordered_json MetricsJson(const FillMetrics& m) {
-  return {{"mpjpe_unkeyed_cm", m.mpjpe_unkeyed_cm},
-          {"mpjpe_keyed_between_cm", m.mpjpe_keyed_between_cm},
-          {"angle_unkeyed_deg", m.angle_unkeyed_deg},
-          {"npss", m.npss},
-          {"jitter_ratio", m.jitter_ratio},
-          {"foot_skate_cm_per_s", m.foot_skate_cm_per_s},
-          {"foot_skate_share", m.foot_skate_share},
-          {"foot_contact_frames", m.foot_contact_frames},
-          {"key_error_mean_deg", m.key_error_mean_deg},
-          {"key_error_max_deg", m.key_error_max_deg},
-          {"bone_length_error", m.bone_length_error}};
-}
-
-void PrintJson(const EvaluationResult& r, const EvalArgs& args) {
-  nlohmann::ordered_json out;
-  out["protocol"] = {{"loso", args.against.empty() ? nlohmann::ordered_json(args.loso) : nullptr},
-                     {"against", args.against},
-                     {"scenario", args.scenario.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(args.scenario)},
-                     {"keep", args.keep}, {"every", args.every}, {"folds", r.folds}};
-  nlohmann::ordered_json summary = nlohmann::ordered_json::array();
-  for (const SummaryRow& row : r.summary) {
-    nlohmann::ordered_json e = {{"method", row.method}, {"category", row.category}, {"clips", row.clips}};
-    e["metrics"] = MetricsJson(row.mean);
-    e["coverage"] = {{"median_unexplained", row.coverage_median_unexplained}, {"poorly_covered_share", row.poorly_covered_share}};
-    e["fill_seconds"] = row.fill_seconds;
-    e["seconds_per_second"] = row.seconds_per_s;
-    summary.push_back(e);
-  }
-  out["summary"] = summary;
-  nlohmann::ordered_json clips = nlohmann::ordered_json::array();
-  for (const ClipScore& s : r.scores)
-    clips.push_back({{"clip", s.clip}, {"fold", s.fold}, {"category", s.category}, {"method", s.method},
-                     {"metrics", MetricsJson(s.metrics)},
-                     {"coverage", {{"median_unexplained", s.coverage_median_unexplained},
-                                   {"poorly_covered_share", s.poorly_covered_share}}},
-                     {"fill_seconds", s.fill_seconds}});
-  out["clips"] = clips;
-  std::printf("%s\n", out.dump(2).c_str());
-}
-
-void PrintTable(const EvaluationResult& r, const EvalArgs& args) {
-  if (args.against.empty()) {
-    std::printf("leave-one-%s-out: %d folds, keep %s every %d frames\n", args.loso.c_str(), r.folds,
-                args.keep.c_str(), args.every);
-  } else {
-    std::printf("against a fixed database: keep %s every %d frames\n", args.keep.c_str(), args.every);
-  }
-  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %6s %9s\n", "category", "method", "clips", "unkeyed",
-              "keyed-btw", "angle", "NPSS", "jitter", "skate", "skate%", "key-mean", "key-max", "poor%", "ms/fill");
-  std::printf("%-11s %-13s %5s %9s %9s %8s %7s %7s %8s %6s %8s %8s %6s %9s\n", "", "", "", "cm", "cm", "deg", "",
-              "ratio", "cm/s", "", "deg", "deg", "", "");
-  for (const char* category : {"locomotion", "gestures", "all"})
-    for (const SummaryRow& row : r.summary) {
-      if (row.category != category) continue;
-      const FillMetrics& m = row.mean;
-      std::printf("%-11s %-13s %5d %9.3f %9.3f %8.2f %7.4f %7.3f %8.2f %6.1f %8.4f %8.4f %6.1f %9.1f\n", category,
-                  row.method.c_str(), row.clips, m.mpjpe_unkeyed_cm, m.mpjpe_keyed_between_cm, m.angle_unkeyed_deg,
-                  m.npss, m.jitter_ratio, m.foot_skate_cm_per_s, 100.0 * m.foot_skate_share, m.key_error_mean_deg,
-                  m.key_error_max_deg, 100.0 * row.poorly_covered_share, 1000.0 * row.fill_seconds);
-    }
 }
 
 Result<std::vector<LabeledClip>> LoadClips(const std::vector<std::string>& paths) {
@@ -166,6 +106,17 @@ int RunEval(EvalArgs& args) {
   options.only_folds = SplitList(args.folds);
   options.only_contents = SplitList(args.contents);
   options.plant_feet = args.feet == "plant";
+  Result<Split> split = ParseSplit(args.split);
+  if (!split.ok()) {
+    PrintError(split.status().message());
+    return kExitUsage;
+  }
+  // The halves are leave-one-out folds; a fixed database has none, so --against runs unsplit.
+  if (!args.against.empty() && args.split_given) {
+    PrintError("--split: not used with --against (a fixed database has no folds to split)");
+    return kExitUsage;
+  }
+  options.split = args.against.empty() ? *split : Split::kNone;
   const graph::NodeTypeSpec spec = FillMethodSpec();
   Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
   Result<FillOptions> fill = node_options.ok() ? graph::FillOptionsFrom(*node_options, FlagLabel(spec))
@@ -212,10 +163,20 @@ int RunEval(EvalArgs& args) {
     PrintError(result.status().message());
     return ExitCodeFor(result.status(), Stage::kProcessing);
   }
+  EvalReportContext context;
+  context.loso = args.loso;
+  context.against = args.against;
+  context.scenario = args.scenario;
+  context.keep = args.keep;
+  context.every = args.every;
+  context.split = options.split;
+  context.bootstrap = options.bootstrap;
+  context.default_method = FillMethodName(FillOptions{}.method);
+  context.by_fold = args.by_fold;
   if (args.json) {
-    PrintJson(*result, args);
+    PrintEvalJson(*result, context);
   } else {
-    PrintTable(*result, args);
+    PrintEvalTable(*result, context);
   }
   return kExitOk;
 }
@@ -244,9 +205,18 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--methods", args->methods, "Methods to score: mean, nn, fragment, hierarchical, pca, hybrid "
                                                   "(PCA models are built from each fold's database only)")
       ->capture_default_str();
+  CLI::Option* split = command->add_option("--split", args->split,
+                      "Split-half protocol: the fold values sorted by name and dealt alternately into a tuning "
+                      "half (leave-one-out inside itself) and a reporting half (leave-one-out against all other "
+                      "folds); tuning, reporting, both (both halves, one table each) or none (plain "
+                      "leave-one-out over every fold). Not with --against")
+      ->capture_default_str();
+  command->add_flag("--by-fold", args->by_fold,
+                    "Also print every (fold, category) cell: each method's mean and its difference to mean");
   command->add_option("--folds", args->folds, "Only these folds (comma-separated label values)");
   command->add_option("--contents", args->contents, "Only test clips with these contents (comma-separated)");
-  command->add_flag("--json", args->json, "Print JSON (summary and per clip) instead of the table");
+  command->add_flag("--json", args->json,
+                    "Print JSON (summary with intervals, fold cells, per clip) instead of the table");
   command->add_option("--feet", args->feet, "plant: hold the feet where they touch the ground (as fill does); free: leave them")
       ->check(CLI::IsMember({"plant", "free"}))
       ->capture_default_str();
@@ -255,6 +225,8 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   AddNodeFlags(*command, FillMethodSpec(), args->flags, {"method"});
   command->footer(
       "Example:\n"
+      "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --methods mean,hierarchical \\\n"
+      "      --feet plant --split both --by-fold\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
       "      --methods mean,nn,fragment,hierarchical --json > eval.json\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --every 8 \\\n"
@@ -263,7 +235,10 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
       "      --against fixtures/default_db --methods mean,hierarchical\n"
       "  mocapfill eval --db ../shared/data/bandai-namco-1/data --loso style --scenario upper-body \\\n"
       "      --methods mean,hierarchical");
-  command->callback([args, &action] { action = [args] { return RunEval(*args); }; });
+  command->callback([args, split, &action] {
+    args->split_given = split->count() > 0;
+    action = [args] { return RunEval(*args); };
+  });
 }
 
 }  // namespace mocapfill::cli

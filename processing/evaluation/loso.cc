@@ -22,23 +22,10 @@ bool Contains(const std::vector<std::string>& list, const std::string& value) {
   return std::find(list.begin(), list.end(), value) != list.end();
 }
 
-void Accumulate(FillMetrics& sum, const FillMetrics& m, double w) {
-  sum.mpjpe_unkeyed_cm += w * m.mpjpe_unkeyed_cm;
-  sum.mpjpe_keyed_between_cm += w * m.mpjpe_keyed_between_cm;
-  sum.angle_unkeyed_deg += w * m.angle_unkeyed_deg;
-  sum.npss += w * m.npss;
-  sum.jitter_ratio += w * m.jitter_ratio;
-  sum.key_error_mean_deg += w * m.key_error_mean_deg;
-  sum.key_error_max_deg = std::max(sum.key_error_max_deg, m.key_error_max_deg);  // worst, not mean
-  sum.bone_length_error += w * m.bone_length_error;
-  sum.unkeyed_joints = m.unkeyed_joints;
-}
-
-Result<MotionDatabase> BuildFoldDatabase(const std::vector<LabeledClip>& clips, const std::string& fold,
-                                         const EvaluationOptions& options) {
+Result<MotionDatabase> BuildDatabase(const std::vector<LabeledClip>& clips, const std::vector<int>& indices,
+                                     const EvaluationOptions& options) {
   MotionDatabaseBuilder builder(options.database);
-  for (const LabeledClip& c : clips)
-    if (Label(c, options.fold_label) != fold) RETURN_IF_ERROR(builder.Add(c.skeleton, c.clip, c.labels));
+  for (int i : indices) RETURN_IF_ERROR(builder.Add(clips[i].skeleton, clips[i].clip, clips[i].labels));
   return builder.Build();
 }
 
@@ -51,12 +38,13 @@ void CoverageFigures(const CoverageReport& coverage, int frames, ClipScore& scor
   score.poorly_covered_share = frames > 0 ? std::min(1.0, double(poor) / frames) : 0.0;
 }
 
-// Scores the clips of `fold` (every clip when fold is empty) against `db`.
-Status ScoreClips(const std::vector<LabeledClip>& clips, const std::string& fold, const MotionDatabase& db,
-                  const EvaluationOptions& options, int total, EvaluationResult& result) {
+// Scores the clips `tests` of `fold` (of the half `half`) against `db`.
+Status ScoreClips(const std::vector<LabeledClip>& clips, const std::vector<int>& tests, const std::string& fold,
+                  const std::string& half, const MotionDatabase& db, const EvaluationOptions& options, int total,
+                  EvaluationResult& result) {
   FillEngine engine(db);
-  for (const LabeledClip& c : clips) {
-    if (!fold.empty() && Label(c, options.fold_label) != fold) continue;
+  for (int index : tests) {
+    const LabeledClip& c = clips[index];
     const std::string content = Label(c, "content");
     if (!options.only_contents.empty() && !Contains(options.only_contents, content)) continue;
     ASSIGN_OR_RETURN(const MotionClip sketch, MakeSketch(c.skeleton, c.clip, options.sketch));
@@ -70,10 +58,11 @@ Status ScoreClips(const std::vector<LabeledClip>& clips, const std::string& fold
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!filled.ok()) return filled.status().WithContext("clip '" + c.clip.name + "', method " + method.name);
       ASSIGN_OR_RETURN(FillMetrics metrics, ScoreFill(c.skeleton, c.clip, sketch, filled->clip, db.root_joint()));
-      ClipScore score{c.clip.name, fold.empty() ? "against" : fold,
+      ClipScore score{c.clip.name, fold,
                       Contains(options.locomotion_contents, content) ? "locomotion" : "gestures",
                       method.name, metrics, seconds, seconds / std::max(1e-9, c.clip.duration_s())};
       CoverageFigures(filled->report.coverage, sketch.num_frames, score);
+      score.half = half;
       result.scores.push_back(score);
     }
     if (options.on_clip_done) {
@@ -85,20 +74,24 @@ Status ScoreClips(const std::vector<LabeledClip>& clips, const std::string& fold
   return OkStatus();
 }
 
-Status ScoreFold(const std::vector<LabeledClip>& clips, const std::string& fold, const EvaluationOptions& options,
-                 int total, EvaluationResult& result) {
-  ASSIGN_OR_RETURN(const MotionDatabase db, BuildFoldDatabase(clips, fold, options));
-  return ScoreClips(clips, fold, db, options, total, result);
+int CountTested(const std::vector<LabeledClip>& clips, const std::vector<int>& tests,
+                const EvaluationOptions& options) {
+  int total = 0;
+  for (int i : tests)
+    if (options.only_contents.empty() || Contains(options.only_contents, Label(clips[i], "content"))) ++total;
+  return total;
 }
 
-int CountTested(const std::vector<LabeledClip>& clips, const EvaluationOptions& options,
-                const std::set<std::string>* folds) {
-  int total = 0;
-  for (const LabeledClip& c : clips)
-    if ((!folds || folds->count(Label(c, options.fold_label))) &&
-        (options.only_contents.empty() || Contains(options.only_contents, Label(c, "content"))))
-      ++total;
-  return total;
+std::vector<int> AllIndices(size_t n) {
+  std::vector<int> out(n);
+  for (size_t i = 0; i < n; ++i) out[i] = static_cast<int>(i);
+  return out;
+}
+
+void SummariseInto(const EvaluationOptions& options, EvaluationResult& result) {
+  result.summary = Summarise(result.scores, options.methods, options.bootstrap);
+  result.fold_cells = SummariseFolds(result.scores, options.methods);
+  result.above_mean = CountAboveMean(result.fold_cells);
 }
 
 }  // namespace
@@ -111,59 +104,32 @@ Status EvaluationOptions::Validate() const {
   return database.Validate();
 }
 
-std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const std::vector<NamedMethod>& methods) {
-  std::vector<SummaryRow> rows;
-  for (const NamedMethod& method : methods)
-    for (const char* category : {"locomotion", "gestures", "all"}) {
-      SummaryRow row;
-      row.method = method.name;
-      row.category = category;
-      for (const ClipScore& s : scores)
-        if (s.method == method.name && (row.category == "all" || s.category == row.category)) ++row.clips;
-      if (row.clips == 0) continue;
-      const double w = 1.0 / row.clips;
-      for (const ClipScore& s : scores)
-        if (s.method == method.name && (row.category == "all" || s.category == row.category)) {
-          Accumulate(row.mean, s.metrics, w);
-          row.coverage_median_unexplained += w * s.coverage_median_unexplained;
-          row.poorly_covered_share += w * s.poorly_covered_share;
-          row.fill_seconds += w * s.fill_seconds;
-          row.seconds_per_s += w * s.seconds_per_s;
-        }
-      long contact_frames = 0;
-      for (const ClipScore& s : scores)
-        if (s.method == method.name && (row.category == "all" || s.category == row.category)) {
-          contact_frames += s.metrics.foot_contact_frames;
-          row.mean.foot_skate_cm_per_s += s.metrics.foot_skate_cm_per_s * s.metrics.foot_contact_frames;
-          row.mean.foot_skate_share += s.metrics.foot_skate_share * s.metrics.foot_contact_frames;
-        }
-      row.mean.foot_contact_frames = contact_frames;
-      if (contact_frames > 0) {
-        row.mean.foot_skate_cm_per_s /= contact_frames;
-        row.mean.foot_skate_share /= contact_frames;
-      }
-      rows.push_back(row);
-    }
-  return rows;
-}
-
 Result<EvaluationResult> RunLeaveOneOut(const std::vector<LabeledClip>& clips, const EvaluationOptions& options) {
   RETURN_IF_ERROR(options.Validate());
   if (clips.size() < 2) return InvalidArgument("leave-one-out needs at least two clips");
-  std::set<std::string> folds;
+  std::vector<ClipLabels> labels;
+  std::vector<std::string> values;
   for (const LabeledClip& c : clips) {
     const std::string fold = Label(c, options.fold_label);
     if (fold.empty()) return InvalidData("clip '" + c.clip.name + "' has no '" + options.fold_label + "' label");
-    if (options.only_folds.empty() || Contains(options.only_folds, fold)) folds.insert(fold);
+    labels.push_back(c.labels);
+    values.push_back(fold);
   }
-  if (folds.empty()) return InvalidArgument("no clip belongs to the requested folds");
-  const int total = CountTested(clips, options, &folds);
+  ASSIGN_OR_RETURN(const std::vector<PlannedFold> plan,
+                   PlanFolds(labels, {options.fold_label, options.split, options.only_folds}));
+  int total = 0;
+  for (const PlannedFold& fold : plan) total += CountTested(clips, fold.tests, options);
   EvaluationResult result;
-  for (const std::string& fold : folds) {
-    RETURN_IF_ERROR(ScoreFold(clips, fold, options, total, result).WithContext("fold '" + fold + "'"));
+  result.halves = SplitFoldValues(values);
+  for (const PlannedFold& fold : plan) {
+    Status scored = [&]() -> Status {
+      ASSIGN_OR_RETURN(const MotionDatabase db, BuildDatabase(clips, fold.database, options));
+      return ScoreClips(clips, fold.tests, fold.fold, fold.half, db, options, total, result);
+    }();
+    RETURN_IF_ERROR(scored.WithContext("fold '" + fold.fold + "'"));
     ++result.folds;
   }
-  result.summary = Summarise(result.scores, options.methods);
+  SummariseInto(options, result);
   return result;
 }
 
@@ -172,13 +138,12 @@ Result<EvaluationResult> RunAgainstDatabase(const std::vector<LabeledClip>& test
   RETURN_IF_ERROR(options.Validate());
   if (tests.empty()) return InvalidArgument("no clip to test");
   if (database.empty()) return InvalidArgument("the database has no clip");
-  MotionDatabaseBuilder builder(options.database);
-  for (const LabeledClip& c : database) RETURN_IF_ERROR(builder.Add(c.skeleton, c.clip, c.labels));
-  ASSIGN_OR_RETURN(const MotionDatabase db, builder.Build());
+  ASSIGN_OR_RETURN(const MotionDatabase db, BuildDatabase(database, AllIndices(database.size()), options));
   EvaluationResult result;
-  RETURN_IF_ERROR(ScoreClips(tests, "", db, options, CountTested(tests, options, nullptr), result));
+  const std::vector<int> all = AllIndices(tests.size());
+  RETURN_IF_ERROR(ScoreClips(tests, all, "against", kNoHalf, db, options, CountTested(tests, all, options), result));
   result.folds = 1;
-  result.summary = Summarise(result.scores, options.methods);
+  SummariseInto(options, result);
   return result;
 }
 

@@ -1,7 +1,8 @@
 // Leave-one-out evaluation protocol: clips are grouped into folds by a
 // label (leave-one-style-out: --loso style); for each fold a database is built from the
-// other folds' clips, every clip of the fold is reduced to a sketch, filled by each method
-// and scored against itself. Locomotion and gestures are summarised separately.
+// other folds' clips (with a split, fold_plan.h decides which), every clip of the fold is
+// reduced to a sketch, filled by each method and scored against itself. Locomotion and
+// gestures are summarised separately, per half (summary.h).
 #pragma once
 
 #include <functional>
@@ -13,8 +14,10 @@
 #include "processing/core/skeleton.h"
 #include "processing/core/status.h"
 #include "processing/database/motion_database_builder.h"
+#include "processing/evaluation/fold_plan.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "processing/evaluation/summary.h"
 #include "processing/fill/fill_options.h"
 #include "processing/motion/foot_plant.h"
 
@@ -26,13 +29,11 @@ struct LabeledClip {
   ClipLabels labels;  // "content", "style", ...
 };
 
-struct NamedMethod {
-  std::string name;
-  FillOptions options;
-};
-
 struct EvaluationOptions {
   std::string fold_label = "style";  // clips sharing this label's value form one fold
+  // Plain leave-one-out by default; the split-half protocol is fold_plan.h's.
+  Split split = Split::kNone;
+  BootstrapOptions bootstrap;  // the summary's intervals
   SketchSpec sketch;
   std::vector<NamedMethod> methods;
   // Contents reported as locomotion; every other content is a gesture.
@@ -49,37 +50,19 @@ struct EvaluationOptions {
   Status Validate() const;
 };
 
-struct ClipScore {
-  std::string clip;
-  std::string fold;
-  std::string category;  // "locomotion" or "gestures"
-  std::string method;
-  FillMetrics metrics;
-  double fill_seconds = 0.0;
-  double seconds_per_s = 0.0;  // fill time per second of animation
-  double coverage_median_unexplained = 0.0;  // fragment methods: median FragmentCoverage::unexplained
-  double poorly_covered_share = 0.0;   // share of the sketch's frames in poorly covered stretches
-};
-
-struct SummaryRow {
-  std::string method;
-  std::string category;  // "locomotion", "gestures", "all"
-  int clips = 0;
-  FillMetrics mean;      // every metric averaged over clips
-  double coverage_median_unexplained = 0.0;  // averaged over clips
-  double poorly_covered_share = 0.0;
-  double fill_seconds = 0.0;
-  double seconds_per_s = 0.0;
-};
-
 struct EvaluationResult {
   std::vector<ClipScore> scores;
-  std::vector<SummaryRow> summary;  // per method: locomotion, gestures, all
-  int folds = 0;
+  std::vector<SummaryRow> summary;  // per half and method: locomotion, gestures, all
+  std::vector<FoldCell> fold_cells;
+  std::vector<AboveMeanCount> above_mean;
+  int folds = 0;       // folds run
+  SplitHalves halves;  // of every fold value (empty without leave-one-out)
 };
 
-// Runs the protocol. Every clip must have the first clip's skeleton (joint names and parents)
-// and its rate. Errors: invalid options, clips without the fold label, a method failing.
+// Runs the protocol: the folds of PlanFolds (options.split), each tested against a database of
+// its plan's clips. Every clip must have the first clip's skeleton (joint names and parents)
+// and its rate. Errors: invalid options, clips without the fold label, a half too small to
+// split, a method failing.
 Result<EvaluationResult> RunLeaveOneOut(const std::vector<LabeledClip>& clips, const EvaluationOptions& options);
 
 // Every clip of `tests` (those of options.only_contents) sketched and filled against one
@@ -87,8 +70,5 @@ Result<EvaluationResult> RunLeaveOneOut(const std::vector<LabeledClip>& clips, c
 // fold is "against"). Errors: invalid options, no test or database clip, a method failing.
 Result<EvaluationResult> RunAgainstDatabase(const std::vector<LabeledClip>& tests,
                                             const std::vector<LabeledClip>& database, const EvaluationOptions& options);
-
-// Averages of `scores` per (method, category) in method order, plus an "all" row per method.
-std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const std::vector<NamedMethod>& methods);
 
 }  // namespace mocapfill

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "processing/core/kinematics.h"
@@ -84,6 +85,26 @@ void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled
   m.foot_contact_frames = contacts;
 }
 
+// Heights are world y (the importers' up axis), as the skating measure's horizontal plane is.
+void ScorePenetration(const Posed& truth, const Posed& filled, const std::vector<int>& feet, int frames,
+                      int num_joints, FillMetrics& m) {
+  double deepest = 0.0, sum = 0.0;
+  long below = 0;
+  for (int j : feet) {
+    double floor = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < frames; ++f) floor = std::min(floor, truth.positions[f * num_joints + j].y());
+    for (int f = 0; f < frames; ++f) {
+      const double depth = (floor - filled.positions[f * num_joints + j].y()) * kCmPerM;
+      if (depth <= 0.0) continue;
+      deepest = std::max(deepest, depth);
+      sum += depth;
+      ++below;
+    }
+  }
+  m.penetration_max_cm = deepest;
+  m.penetration_mean_cm = below ? sum / below : 0.0;
+}
+
 std::vector<std::vector<double>> GlobalQuaternionSignals(const Posed& posed, const std::vector<int>& joints,
                                                          int frames, int num_joints) {
   std::vector<std::vector<double>> dims(joints.size() * 4, std::vector<double>(frames));
@@ -133,6 +154,22 @@ double BoneLengthError(const Skeleton& skeleton, const MotionClip& clip, const P
 }
 
 }  // namespace
+
+const std::vector<MetricField>& AveragedMetricFields() {
+  static const std::vector<MetricField> fields = {
+      {"mpjpe_unkeyed_cm", &FillMetrics::mpjpe_unkeyed_cm},
+      {"mpjpe_keyed_between_cm", &FillMetrics::mpjpe_keyed_between_cm},
+      {"angle_unkeyed_deg", &FillMetrics::angle_unkeyed_deg},
+      {"npss", &FillMetrics::npss},
+      {"jitter_ratio", &FillMetrics::jitter_ratio},
+      {"foot_skate_cm_per_s", &FillMetrics::foot_skate_cm_per_s},
+      {"foot_skate_share", &FillMetrics::foot_skate_share},
+      {"penetration_max_cm", &FillMetrics::penetration_max_cm},
+      {"penetration_mean_cm", &FillMetrics::penetration_mean_cm},
+      {"key_error_mean_deg", &FillMetrics::key_error_mean_deg},
+      {"bone_length_error", &FillMetrics::bone_length_error}};
+  return fields;
+}
 
 double Npss(const std::vector<std::vector<double>>& truth, const std::vector<std::vector<double>>& predicted) {
   double weighted = 0.0, total_power = 0.0;
@@ -205,6 +242,7 @@ Result<FillMetrics> ScoreFill(const Skeleton& skeleton, const MotionClip& truth,
   const double true_jerk = MeanJerk(pt, body, frames, nj, rate);
   m.jitter_ratio = true_jerk > 0.0 ? MeanJerk(pf, body, frames, nj, rate) / true_jerk : 0.0;
   ScoreFeet(skeleton, pt, pf, feet, frames, rate, m);
+  ScorePenetration(pt, pf, feet, frames, nj, m);
   ScoreKeys(skeleton, sketch, filled, m);
   m.bone_length_error = BoneLengthError(skeleton, truth, pt, pf, frames);
   return m;

@@ -31,6 +31,12 @@ struct FillMetrics {
   double foot_skate_cm_per_s = 0.0;
   double foot_skate_share = 0.0;
   long foot_contact_frames = 0;
+  // Ground penetration (cm) of the filled foot joints: each one's floor is the truth's lowest
+  // height of that joint over the clip (the capture's own floor, whatever its offset); the
+  // deepest any of them goes below its floor, and the mean depth over the (frame, joint) pairs
+  // that are below it (0 when none is).
+  double penetration_max_cm = 0.0;
+  double penetration_mean_cm = 0.0;
   // Geodesic angle (deg) between output and sketch at keyed (joint, frame) pairs.
   double key_error_mean_deg = 0.0;
   double key_error_max_deg = 0.0;
@@ -38,6 +44,14 @@ struct FillMetrics {
   double bone_length_error = 0.0;
   int unkeyed_joints = 0;  // how many joints the unkeyed numbers cover
 };
+
+// The metrics that are means over a clip, by their JSON names, for averaging and intervals over
+// clips (key_error_max_deg is a maximum and unkeyed_joints a count, so neither is listed).
+struct MetricField {
+  const char* name;
+  double FillMetrics::*field;
+};
+const std::vector<MetricField>& AveragedMetricFields();
 
 // Scores `filled` against `truth` (same skeleton, same frame count). `sketch` supplies the
 // keys (MotionClip::keys) that decide keyed/unkeyed joints and key frames. root_joint is the

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "formats/motion_io.h"
@@ -145,13 +146,15 @@ TEST(FillCli, RenamedSkeletonNeedsAMap) {
 
 TEST(EvalCli, LeaveOneStyleOutOnTheDefaultDatabaseScoresEveryMethod) {
   const RunResult run = RunCli("-q eval --db " + testing::FixturePath("default_db") +
-                               " --contents run --methods mean,hierarchical --json");
+                               " --contents run --methods mean,hierarchical --json --split none");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json json = nlohmann::json::parse(run.output);
   EXPECT_EQ(json["protocol"]["folds"], 3);  // normal, happy, tired
+  EXPECT_EQ(json["protocol"]["split"], "none");
   ASSERT_EQ(json["clips"].size(), 6u);      // 3 run clips x 2 methods
   double mean_cm = 0.0, hierarchical_cm = 0.0;
   for (const auto& row : json["summary"]) {
+    EXPECT_EQ(row["half"], "all");
     if (row["category"] != "all") continue;
     EXPECT_EQ(row["clips"], 3);
     EXPECT_LT(row["metrics"]["bone_length_error"].get<double>(), 1e-9);
@@ -160,6 +163,89 @@ TEST(EvalCli, LeaveOneStyleOutOnTheDefaultDatabaseScoresEveryMethod) {
   }
   EXPECT_GT(mean_cm, 5.0);  // the mean pose misses the arm swing by centimetres
   EXPECT_LT(hierarchical_cm, mean_cm);
+}
+
+// The split-half protocol on the default database's run clips: styles happy and tired form the
+// tuning half (each against the other only), normal the reporting half (against both others).
+// The JSON carries both halves, intervals, the difference to mean, penetration and fold cells;
+// the reporting fold scores exactly as in plain leave-one-out (same database).
+TEST(EvalCli, SplitHalvesCarryIntervalsFoldCellsAndPenetration) {
+  const std::string db = testing::FixturePath("default_db");
+  const RunResult run = RunCli("-q eval --db " + db + " --contents run --methods mean,hierarchical --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  EXPECT_EQ(json["protocol"]["split"], "both");
+  EXPECT_EQ(json["protocol"]["halves"]["tuning"], nlohmann::json({"happy", "tired"}));
+  EXPECT_EQ(json["protocol"]["halves"]["reporting"], nlohmann::json({"normal"}));
+  EXPECT_EQ(json["protocol"]["bootstrap"]["resamples"], 2000);
+  int tuning_rows = 0, reporting_rows = 0;
+  for (const auto& row : json["summary"]) {
+    if (row["category"] != "all") continue;
+    const bool tuning = row["half"] == "tuning";
+    (tuning ? tuning_rows : reporting_rows) += 1;
+    EXPECT_EQ(row["clips"], tuning ? 2 : 1) << row.dump();
+    const double unkeyed = row["metrics"]["mpjpe_unkeyed_cm"].get<double>();
+    const auto& ci = row["intervals"]["mpjpe_unkeyed_cm"];
+    EXPECT_LE(ci["lo"].get<double>(), unkeyed + 1e-9);
+    EXPECT_GE(ci["hi"].get<double>(), unkeyed - 1e-9);
+    EXPECT_GE(row["metrics"]["penetration_max_cm"].get<double>(), 0.0);
+    EXPECT_TRUE(row["intervals"].contains("penetration_mean_cm"));
+    EXPECT_TRUE(row["intervals"].contains("foot_skate_cm_per_s"));
+    if (row["method"] == "mean") {
+      EXPECT_TRUE(row["below_mean"].is_null());
+    } else {
+      const auto& below = row["below_mean"];
+      ASSERT_FALSE(below.is_null());
+      EXPECT_LE(below["lo"].get<double>(), below["pct"].get<double>() + 1e-9);
+      EXPECT_GE(below["hi"].get<double>(), below["pct"].get<double>() - 1e-9);
+    }
+  }
+  EXPECT_EQ(tuning_rows, 2);
+  EXPECT_EQ(reporting_rows, 2);
+  ASSERT_EQ(json["fold_cells"].size(), 3u);  // one locomotion cell per style
+  for (const auto& cell : json["fold_cells"]) {
+    EXPECT_EQ(cell["category"], "locomotion");
+    EXPECT_EQ(cell["half"], cell["fold"] == "normal" ? "reporting" : "tuning");
+    ASSERT_EQ(cell["methods"].size(), 2u);
+    EXPECT_EQ(cell["default_vs_mean"]["method"], "hierarchical");
+  }
+  ASSERT_EQ(json["above_mean"].size(), 2u);  // hierarchical in each half
+  EXPECT_EQ(json["above_mean"][0]["cells"].get<int>() + json["above_mean"][1]["cells"].get<int>(), 3);
+  std::map<std::string, double> reporting;
+  for (const auto& clip : json["clips"]) {
+    EXPECT_EQ(clip["half"], clip["fold"] == "normal" ? "reporting" : "tuning");
+    if (clip["half"] == "reporting") reporting[clip["method"]] = clip["metrics"]["mpjpe_unkeyed_cm"].get<double>();
+  }
+  const RunResult plain =
+      RunCli("-q eval --db " + db + " --contents run --folds normal --methods mean,hierarchical --json --split none");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const nlohmann::json unsplit = nlohmann::json::parse(plain.output);
+  ASSERT_EQ(unsplit["clips"].size(), 2u);
+  for (const auto& clip : unsplit["clips"])
+    EXPECT_EQ(clip["metrics"]["mpjpe_unkeyed_cm"].get<double>(), reporting[clip["method"]]) << clip["method"];
+}
+
+// The table names both halves and their styles, shows intervals and the cells above mean, and
+// with --by-fold a row per fold; a bad --split value is a usage error naming the allowed values,
+// and so is --split with --against.
+TEST(EvalCli, TablePrintsBothHalvesAndBadSplitIsAUsageError) {
+  const std::string db = testing::FixturePath("default_db");
+  const RunResult run = RunCli("-q eval --db " + db + " --contents run --methods mean,hierarchical --by-fold");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  for (const char* expected : {"tuning half (2): happy, tired", "reporting half (1): normal", "tuning half: 2 folds",
+                               "reporting half: 1 folds", "per fold: hierarchical above mean in", "2000 resamples"})
+    EXPECT_NE(run.output.find(expected), std::string::npos) << expected << "\n" << run.output;
+  EXPECT_NE(run.output.find(" ["), std::string::npos) << run.output;
+  for (const char* fold : {"\nhappy ", "\ntired ", "\nnormal "})
+    EXPECT_NE(run.output.find(fold), std::string::npos) << fold << "\n" << run.output;
+  const RunResult bad = RunCli("eval --db " + db + " --split halves");
+  EXPECT_EQ(bad.exit_code, 1) << bad.output;
+  EXPECT_NE(bad.output.find("--split: unknown value 'halves' (allowed: none, tuning, reporting, both)"),
+            std::string::npos)
+      << bad.output;
+  const RunResult fixed = RunCli("eval --db " + db + " --against " + db + " --split tuning");
+  EXPECT_EQ(fixed.exit_code, 1) << fixed.output;
+  EXPECT_NE(fixed.output.find("--split: not used with --against"), std::string::npos) << fixed.output;
 }
 
 // eval --against: every run clip of the default database tested against the whole default

@@ -1,6 +1,7 @@
 # Sketch making, fill metrics and the fill methods on real data.
 mocapfill_add_test(evaluation_tests
-  CORPUS [=[^(SketchMaker\.|FillMetrics\.(TruthAgainstItselfScoresZero|SketchAgainstTruthMeasuresTheMissingUpperBody|SummariesPoolFootSkatingOverContactFrames)$)]=]
+  CORPUS [=[^(SketchMaker\.|FillMetrics\.(TruthAgainstItselfScoresZero|SketchAgainstTruthMeasuresTheMissingUpperBody|SummariesPoolFootSkatingOverContactFrames)$|FoldPlan\.Corpus)]=]
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/evaluation_test.cc
-  LIBS mocapfill_evaluation mocapfill_formats)
+    ${CMAKE_CURRENT_LIST_DIR}/protocol_test.cc
+  LIBS mocapfill_evaluation mocapfill_formats mocapfill_mfdb)
