@@ -8,6 +8,7 @@
 
 #include "converter/commands.h"
 #include "converter/console.h"
+#include "converter/database_arg.h"
 #include "converter/exit_codes.h"
 #include "converter/node_flags.h"
 #include "converter/option_values.h"
@@ -32,6 +33,7 @@ struct EvalArgs {
   std::string folds, contents, save_sketches;
   bool json = false;
   std::string feet = "free";
+  bool mirror = DatabaseOptions{}.mirror;  // the fold databases'; test clips are never mirrored
   NodeFlags flags;  // the fill methods' options (graph/nodes/fill_schema.h), except the method
 };
 
@@ -165,6 +167,7 @@ int RunEval(EvalArgs& args) {
   options.only_folds = SplitList(args.folds);
   options.only_contents = SplitList(args.contents);
   options.plant_feet = args.feet == "plant";
+  options.database.mirror = args.mirror;
   const graph::NodeTypeSpec spec = FillMethodSpec();
   Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
   Result<FillOptions> fill = node_options.ok() ? graph::FillOptionsFrom(*node_options, FlagLabel(spec))
@@ -249,6 +252,7 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--feet", args->feet, "plant: hold feet that stand at two keys between them (as fill does)")
       ->check(CLI::IsMember({"plant", "free"}))
       ->capture_default_str();
+  AddMirrorFlag(*command, args->mirror);
   command->add_option("--save-sketches", args->save_sketches,
                       "Only write the selected clips' sketches (.sketch.glb, and .sketch.bvh at the key rate) to DIR");
   AddNodeFlags(*command, FillMethodSpec(), args->flags, {"method"});
