@@ -7,6 +7,7 @@
 # from the database (stage pca_model) and with a model built beforehand (`hybrid+model`, --pca);
 # its report's Ceres summary is printed. Targets: hybrid under 1.5 s, its pca_fit under 200 ms.
 #   bench/fill_bench.sh [build-dir] [data-dir] [runs]
+# DB_FLAGS adds flags to the database build, e.g. DB_FLAGS="--mirror on" bench/fill_bench.sh.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
@@ -19,8 +20,9 @@ command -v python3 >/dev/null || { echo "error: python3 is needed to read the re
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-echo "building the database (not timed): $data/bandai-namco-1/data"
-"$exe" -q db build "$data/bandai-namco-1/data" -o "$tmp/bn1.mfdb"
+echo "building the database (not timed): $data/bandai-namco-1/data ${DB_FLAGS:-}"
+# shellcheck disable=SC2086 # DB_FLAGS is a list of words
+"$exe" -q db build "$data/bandai-namco-1/data" -o "$tmp/bn1.mfdb" ${DB_FLAGS:-}
 "$exe" -q pca build --db "$tmp/bn1.mfdb" -o "$tmp/bn1.pca"
 echo "sketch: $sketch ($(nproc) cores)"
 

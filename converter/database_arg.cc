@@ -24,6 +24,16 @@ void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags) {
   command.add_option("--up", flags.import.up, "Up axis of the inputs: auto, y or z")
       ->check(CLI::IsMember({"auto", "y", "z"}))
       ->capture_default_str();
+  AddMirrorFlag(command, flags.mirror);
+}
+
+void AddMirrorFlag(CLI::App& command, bool& mirror) {
+  command
+      .add_option_function<std::string>(
+          "--mirror", [&mirror](const std::string& value) { mirror = value == "on"; },
+          "on: add each clip's left/right mirror image to the database (named <clip>#mirror)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->default_str(mirror ? "on" : "off");
 }
 
 namespace {

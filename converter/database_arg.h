@@ -14,8 +14,12 @@ using DatabaseBuildFlags = DatabaseBuildOptions;
 using mocapfill::DefaultDatabaseDir;
 using mocapfill::IsDatabaseFile;
 
-// Adds --rate, --map, --threads, --unit and --up bound to `flags`.
+// Adds --rate, --map, --threads, --unit, --up and --mirror bound to `flags`.
 void AddDatabaseBuildFlags(CLI::App& command, DatabaseBuildFlags& flags);
+
+// Adds `--mirror on|off` bound to `mirror` (DatabaseOptions::mirror), for verbs that build
+// databases of their own (eval's folds).
+void AddMirrorFlag(CLI::App& command, bool& mirror);
 
 // mocapfill::BuildDatabaseFromPaths with a progress bar on a terminal.
 Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& paths, const DatabaseBuildFlags& flags);

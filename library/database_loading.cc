@@ -73,6 +73,7 @@ Result<MotionDatabase> BuildDatabaseFromPaths(const std::vector<std::string>& pa
   DatabaseOptions database_options;
   database_options.rate_hz = options.rate_hz;
   database_options.threads = options.threads;
+  database_options.mirror = options.mirror;
   MotionDatabaseBuilder builder(database_options);
   if (!options.map.empty()) {
     Result<std::map<std::string, std::string>> map = ReadNameMap(options.map, "--map", kJointNameMapShape);

@@ -12,6 +12,7 @@
 #include "formats/motion_io.h"
 #include "processing/core/motion_database.h"
 #include "processing/core/status.h"
+#include "processing/database/motion_database_builder.h"
 
 namespace mocapfill {
 
@@ -21,6 +22,8 @@ struct DatabaseBuildOptions {
   // Joint-name map: inline JSON {"source joint": "database joint", ...} or a JSON file; empty = none.
   std::string map;
   int threads = 0;         // import and build threads (0 = all cores)
+  // Add each clip's left/right mirror image (DatabaseOptions::mirror).
+  bool mirror = DatabaseOptions{}.mirror;
   ImportOptions import;
 };
 

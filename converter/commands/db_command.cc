@@ -175,7 +175,8 @@ void AddDbCommand(CLI::App& app, CommandAction& action) {
   b->add_option("-o,--output", build->output, "Database file to write (.mfdb)")->required();
   AddDatabaseBuildFlags(*b, build->build);
   b->footer("Examples:\n  mocapfill db build ../shared/data/bandai-namco-1/data -o bn1.mfdb\n"
-            "  mocapfill db build takes/ more.fbx -o mix.mfdb --map names.json --rate 30");
+            "  mocapfill db build takes/ more.fbx -o mix.mfdb --map names.json --rate 30\n"
+            "  mocapfill db build ../shared/data/bandai-namco-1/data -o bn1m.mfdb --mirror on");
   b->callback([build, &action] { action = [build] { return RunBuild(*build); }; });
 
   auto info = std::make_shared<DbInfoArgs>();

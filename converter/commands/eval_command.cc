@@ -8,6 +8,7 @@
 #include "converter/commands.h"
 #include "converter/commands/eval_report.h"
 #include "converter/console.h"
+#include "converter/database_arg.h"
 #include "converter/exit_codes.h"
 #include "converter/node_flags.h"
 #include "converter/option_values.h"
@@ -35,6 +36,7 @@ struct EvalArgs {
   std::string split = "both";
   bool split_given = false;  // --split on the command line (it has no meaning with --against)
   std::string feet = "plant";  // as fill does
+  bool mirror = DatabaseOptions{}.mirror;  // the fold databases'; test clips are never mirrored
   NodeFlags flags;  // the fill methods' options (graph/nodes/fill_schema.h), except the method
 };
 
@@ -117,6 +119,7 @@ int RunEval(EvalArgs& args) {
     return kExitUsage;
   }
   options.split = args.against.empty() ? *split : Split::kNone;
+  bool mirror = DatabaseOptions{}.mirror;  // the fold databases'; test clips are never mirrored
   const graph::NodeTypeSpec spec = FillMethodSpec();
   Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
   Result<FillOptions> fill = node_options.ok() ? graph::FillOptionsFrom(*node_options, FlagLabel(spec))
@@ -220,6 +223,7 @@ void AddEvalCommand(CLI::App& app, CommandAction& action) {
   command->add_option("--feet", args->feet, "plant: hold the feet where they touch the ground (as fill does); free: leave them")
       ->check(CLI::IsMember({"plant", "free"}))
       ->capture_default_str();
+  AddMirrorFlag(*command, args->mirror);
   command->add_option("--save-sketches", args->save_sketches,
                       "Only write the selected clips' sketches (.sketch.glb, and .sketch.bvh at the key rate) to DIR");
   AddNodeFlags(*command, FillMethodSpec(), args->flags, {"method"});

@@ -18,6 +18,7 @@ struct DatabaseOptions {
   int threads = 0;            // import and build threads (0 = every core)
   std::string unit = "auto";  // length unit of the motion files
   std::string up = "auto";    // up axis of the motion files
+  bool mirror = false;        // add each clip's left/right mirror image ("<clip>#mirror")
 };
 
 // Called as files are imported: files done, files in all (from worker threads).

@@ -21,6 +21,7 @@ Database Database::Open(const std::vector<std::string>& paths, const DatabaseOpt
   build.threads = options.threads;
   build.import.unit = options.unit;
   build.import.up = options.up;
+  build.mirror = options.mirror;
   if (!(options.rate_hz > 0.0))
     ThrowIfError(InvalidArgument("rate_hz: must be positive"), FailureStage::kInput);
   Result<MotionDatabase> database = LoadDatabase(paths, build, progress);

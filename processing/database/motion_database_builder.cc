@@ -8,10 +8,14 @@
 #include <thread>
 
 #include "processing/analysis/correlation.h"
+#include "processing/core/kinematics.h"
 #include "processing/database/motion_database_builder.h"
 #include "processing/filtering/pyramid.h"
+#include "processing/motion/mirror.h"
 #include "processing/motion/resample.h"
 #include "processing/motion/tangent_space.h"
+#include "processing/retargeting/rest_pose.h"
+#include "processing/retargeting/rig_mapping.h"
 
 namespace mocapfill {
 
@@ -105,6 +109,25 @@ void ProcessClip(const Skeleton& skeleton, const MotionClip& clip, const Tangent
   }
 }
 
+// Every clip's mirror image, in order. The rig stands in the clips' mean pose (the pose the
+// database's own rest is; its zero pose need not stand), which also decides its sides.
+Result<std::vector<MotionClip>> MirroredClips(const Skeleton& skeleton, const std::vector<MotionClip>& clips) {
+  std::vector<const MotionClip*> ptrs;
+  for (const MotionClip& c : clips) ptrs.push_back(&c);
+  const int root = FindMotionRoot(skeleton, ptrs);
+  const RigRest rest = MeanPoseRest(skeleton, JointMeanRotations(skeleton, ptrs, root), root);
+  Result<RigMapping> mapping = MapHumanoid(skeleton, rest.WorldPositions(skeleton));
+  if (!mapping.ok()) return mapping.status().WithContext("database: mirroring needs a humanoid rig");
+  ASSIGN_OR_RETURN(const MirrorPlan plan, PlanMirror(skeleton, *mapping, rest));
+  std::vector<MotionClip> mirrored;
+  mirrored.reserve(clips.size());
+  for (const MotionClip& c : clips) {
+    mirrored.push_back(MirrorClip(skeleton, plan, c));
+    mirrored.back().name = c.name + "#mirror";
+  }
+  return mirrored;
+}
+
 }  // namespace
 
 Status DatabaseOptions::Validate() const {
@@ -163,8 +186,19 @@ Result<MotionDatabase> MotionDatabaseBuilder::Build() const {
   if (clips_.empty()) return InvalidArgument("database: no clips were added");
   const Skeleton& skeleton = *skeleton_;
   const int threads = options_.threads > 0 ? options_.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<MotionClip> with_mirrors;
+  std::vector<ClipLabels> labels_with_mirrors;
+  if (options_.mirror) {
+    ASSIGN_OR_RETURN(std::vector<MotionClip> mirrored, MirroredClips(skeleton, clips_));
+    with_mirrors = clips_;
+    for (MotionClip& c : mirrored) with_mirrors.push_back(std::move(c));
+    labels_with_mirrors = labels_;
+    labels_with_mirrors.insert(labels_with_mirrors.end(), labels_.begin(), labels_.end());
+  }
+  const std::vector<MotionClip>& clips = options_.mirror ? with_mirrors : clips_;
+  const std::vector<ClipLabels>& labels = options_.mirror ? labels_with_mirrors : labels_;
   std::vector<const MotionClip*> clip_ptrs;
-  for (const MotionClip& c : clips_) clip_ptrs.push_back(&c);
+  for (const MotionClip& c : clips) clip_ptrs.push_back(&c);
 
   MotionDatabase::Parts parts;
   parts.skeleton = skeleton;
@@ -173,21 +207,21 @@ Result<MotionDatabase> MotionDatabaseBuilder::Build() const {
   const int root = parts.reference.root_joint;
   for (int j = 0; j < skeleton.num_joints(); ++j) {
     if (j == root) continue;
-    for (const MotionClip& c : clips_)
+    for (const MotionClip& c : clips)
       if (c.translation_animated[j]) {
         parts.translated_joints.push_back(j);
         break;
       }
   }
   int frames = 0;
-  for (size_t i = 0; i < clips_.size(); ++i) {
+  for (size_t i = 0; i < clips.size(); ++i) {
     ClipRange range;
-    range.name = clips_[i].name;
-    range.labels = labels_[i];
+    range.name = clips[i].name;
+    range.labels = labels[i];
     range.first_frame = frames;
-    range.num_frames = clips_[i].num_frames;
+    range.num_frames = clips[i].num_frames;
     parts.clips.push_back(std::move(range));
-    frames += clips_[i].num_frames;
+    frames += clips[i].num_frames;
   }
   const int channels = 3 * skeleton.num_joints() + (root >= 0 ? kNumRootFeatures : 0);
 
@@ -204,8 +238,8 @@ Result<MotionDatabase> MotionDatabaseBuilder::Build() const {
   parts.translations.resize(frames, 3 * static_cast<Eigen::Index>(parts.translated_joints.size()));
   std::vector<Eigen::MatrixXf> bands(band_indices.size(), Eigen::MatrixXf(frames, channels));
   BuildOutputs outputs{&parts.signals, &parts.translations, &bands};
-  ParallelFor(static_cast<int>(clips_.size()), threads, [&](int i) {
-    ProcessClip(skeleton, clips_[i], parts.reference, parts.translated_joints, band_indices, parts.clips[i].first_frame,
+  ParallelFor(static_cast<int>(clips.size()), threads, [&](int i) {
+    ProcessClip(skeleton, clips[i], parts.reference, parts.translated_joints, band_indices, parts.clips[i].first_frame,
                 parts.clips[i], outputs);
   });
 

@@ -24,6 +24,10 @@ struct DatabaseOptions {
   double correlation_band_hz = 1.0;    // band of the correlation table (nearest peak; L3 at 30 Hz)
   double correlation_max_lag_s = 0.25;  // lags searched: |tau| <= round(this * rate_hz) frames
   int threads = 0;                      // worker threads for Build (0 = hardware concurrency)
+  // Adds each clip's left/right mirror image (processing/motion/mirror.h) as another clip,
+  // named "<clip>#mirror" with the clip's labels: twice the takes to match, each turn and
+  // one-sided gesture in both directions. Needs a humanoid rig (sides from its mapping).
+  bool mirror = false;
 
   // Fails with kInvalidArgument naming the field.
   Status Validate() const;
@@ -48,9 +52,11 @@ class MotionDatabaseBuilder {
 
   int num_clips() const { return static_cast<int>(clips_.size()); }
 
-  // Computes means, signals, stored bands and the correlation table. Deterministic: the same
-  // clips added in the same order give identical databases, whatever the thread count.
-  // Errors: no clips (kInvalidArgument), invalid options.
+  // Computes means, signals, stored bands and the correlation table (after the mirrored
+  // clips, when options.mirror, each added after all the captured ones). Deterministic: the
+  // same clips added in the same order give identical databases, whatever the thread count.
+  // Errors: no clips (kInvalidArgument), invalid options, a rig mirroring cannot tell the
+  // sides of (kInvalidData).
   Result<MotionDatabase> Build() const;
 
  private:

@@ -57,6 +57,23 @@ TEST(DbCli, BuildThenInfoReportsTheDatabase) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/clips"), fs::directory_iterator{}), 2);
 }
 
+TEST(DbCli, MirrorOnAddsEachClipsMirrorImageAndRefusesOtherValues) {
+  const std::string dir = FixtureFolder("db_cli_mirror");
+  const std::string db = dir + "/mirrored.mfdb";
+  RunResult build = RunCli("db build " + dir + "/clips -o " + db + " --mirror on");
+  ASSERT_EQ(build.exit_code, 0) << build.output;
+  RunResult info = RunCli("db info " + db + " --json --clips");
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  const nlohmann::json json = nlohmann::json::parse(info.output);
+  ASSERT_EQ(json["clips"], 4);
+  EXPECT_EQ(json["clip_list"][2]["name"], json["clip_list"][0]["name"].get<std::string>() + "#mirror");
+  EXPECT_EQ(json["clip_list"][2]["labels"], json["clip_list"][0]["labels"]);
+  RunResult bad = RunCli("db build " + dir + "/clips -o " + dir + "/bad.mfdb --mirror yes");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("--mirror"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir + "/bad.mfdb"));
+}
+
 TEST(DbCli, CorruptedTruncatedAndForeignFilesExitWith2) {
   const std::string dir = FixtureFolder("db_cli_bad");
   const std::string db = dir + "/good.mfdb";

@@ -21,3 +21,9 @@ mocapfill_add_test(sketch_fill_tests
 mocapfill_add_test(two_bone_ik_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/two_bone_ik_test.cc
   LIBS mocapfill_motion mocapfill_formats)
+
+# Left/right mirroring of clips on their own rig (processing/motion/mirror.h).
+mocapfill_add_test(mirror_tests
+  CORPUS [=[^Mirror\.GenoFingersPairByName$]=]
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/mirror_test.cc
+  LIBS mocapfill_database mocapfill_motion mocapfill_retargeting mocapfill_formats)
