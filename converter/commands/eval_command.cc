@@ -119,7 +119,7 @@ int RunEval(EvalArgs& args) {
     return kExitUsage;
   }
   options.split = args.against.empty() ? *split : Split::kNone;
-  bool mirror = DatabaseOptions{}.mirror;  // the fold databases'; test clips are never mirrored
+  options.database.mirror = args.mirror;
   const graph::NodeTypeSpec spec = FillMethodSpec();
   Result<graph::NodeOptions> node_options = NodeOptionsFromFlags(spec, args.flags);
   Result<FillOptions> fill = node_options.ok() ? graph::FillOptionsFrom(*node_options, FlagLabel(spec))

@@ -320,6 +320,23 @@ TEST(EvalCli, EveryScenarioKeepsItsKeys) {
   EXPECT_NE(bad.output.find("unknown scenario 'dance' (known: legs8, legs4"), std::string::npos) << bad.output;
 }
 
+// --mirror on reaches the fold databases: the held-out run clips score differently (the
+// mean pose of a mirrored database is symmetric, so even `mean` moves), the test clip
+// itself is not mirrored (one clip either way).
+TEST(EvalCli, MirrorReachesTheFoldDatabases) {
+  double unkeyed[2] = {0.0, 0.0};
+  for (int on = 0; on < 2; ++on) {
+    const RunResult run = RunCli("-q eval --db " + testing::FixturePath("default_db") +
+                                 " --contents run --folds happy --methods mean --split none --json --mirror " +
+                                 (on ? "on" : "off"));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const nlohmann::json json = nlohmann::json::parse(run.output);
+    ASSERT_EQ(json["clips"].size(), 1u);  // the run of the happy style, not mirrored
+    for (const auto& clip : json["clips"]) unkeyed[on] += clip["metrics"]["mpjpe_unkeyed_cm"].get<double>();
+  }
+  EXPECT_GT(std::abs(unkeyed[1] - unkeyed[0]), 1e-3) << unkeyed[0] << " vs " << unkeyed[1];
+}
+
 TEST(EvalCli, UnknownMethodIsAUsageError) {
   const RunResult run = RunCli("eval --db " + testing::FixturePath("default_db") + " --methods magic");
   EXPECT_EQ(run.exit_code, 1) << run.output;
