@@ -187,6 +187,24 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
   return out;
 }
 
+// Between keys the slerped legs and the linearly interpolated root can sink a foot below the
+// ground the keys stand on: every frame's foot (after the holds) is lifted back onto the
+// floor of its heel and toe (their lowest heights at the keys); keys are on or above it.
+void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, std::vector<Correction>& corrections) {
+  const double heel_floor = FloorOf(tracks.ankle, pinned);
+  const double toe_floor = tracks.toe.empty() ? -INFINITY : FloorOf(tracks.toe, pinned);
+  for (size_t f = 0; f < corrections.size(); ++f) {
+    if (pinned[f]) continue;
+    Correction& c = corrections[f];
+    const Vector3d ankle = tracks.ankle[f] + c.move;
+    double lift = heel_floor - ankle.y();
+    if (!tracks.toe.empty()) lift = std::max(lift, toe_floor - (ankle + c.turn * (tracks.toe[f] - tracks.ankle[f])).y());
+    if (lift <= 0.0) continue;
+    c.move.y() += lift;
+    c.any = true;
+  }
+}
+
 }  // namespace
 
 std::vector<double> JointlyKeyedTimes(const MotionClip& clip, const std::vector<int>& joints) {
@@ -250,7 +268,8 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
         held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
                          x * x * (3.0 - 2.0 * x));
     }
-    const std::vector<Correction> corrections = FadeOut(held, pinned, fade);
+    std::vector<Correction> corrections = FadeOut(held, pinned, fade);
+    if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, corrections);
 
     const Vector3d hinge = HingeOf(skeleton, clip, leg.chain);
     PlantedLeg planted{leg.side, std::vector<double>(clip.num_frames, 0.0)};

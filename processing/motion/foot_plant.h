@@ -10,7 +10,8 @@
 //   the toe meets its own anchor; with the toe alone down (heel off), the ankle follows the
 //   held toe along the foot as the fill turns it;
 // - the correction fades out over a few frames beyond a contact, never past a key, so nothing
-//   pops where a contact starts or ends.
+//   pops where a contact starts or ends;
+// - at every frame the foot is lifted back above the floor the keys stand on, if it sank.
 #pragma once
 
 #include <string>
@@ -37,6 +38,9 @@ struct FootPlantOptions {
   ContactDetection detection;
   double fade_s = 0.1;  // the correction fades out over this beyond a contact
   double max_correction_m = 0.1;  // contacts needing a larger move are not held
+  // Every frame's heel and toe are kept at or above their floor (their lowest heights at the
+  // leg's keys): between keys, slerped legs and a linearly interpolated root sink them.
+  bool keep_above_floor = true;
 };
 
 struct FootContact {

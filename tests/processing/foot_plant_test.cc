@@ -163,5 +163,38 @@ TEST(FootPlant, PlantedFeetStandDuringContacts) {
   }
 }
 
+// Planting keeps every frame's heel and toe at or above their floor, the lowest height the
+// leg's keys give them (the slerped legs of the free fill sink below it between keys).
+TEST(FootPlant, FeetStayAboveTheKeyedFloor) {
+  Result<Scene> sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  ASSERT_TRUE(sketch.ok());
+  SketchFillOptions free_options;
+  free_options.plant_feet = false;
+  Result<SketchFillResult> free_fill = FillSketch(*sketch, testing::DefaultDb(), free_options);
+  Result<SketchFillResult> planted = FillSketch(*sketch, testing::DefaultDb(), {});
+  ASSERT_TRUE(free_fill.ok() && planted.ok());
+  const Skeleton& s = planted->scene.skeleton;
+  double planted_depth = 0.0, free_depth = 0.0;
+  for (const char* side : {"L", "R"}) {
+    std::vector<int> keys;
+    for (double t : RotationKeysOf(sketch->clips[0], *s.Find(std::string("UpperLeg_") + side)).times_s)
+      keys.push_back(NearestFrame(planted->scene.clips[0], t));
+    ASSERT_GT(keys.size(), 10u);
+    for (const std::string joint : {std::string("Foot_") + side, std::string("Toes_") + side}) {
+      const std::vector<Eigen::Vector3d> held = TrackOf(s, planted->scene.clips[0], *s.Find(joint));
+      const std::vector<Eigen::Vector3d> loose = TrackOf(s, free_fill->scene.clips[0], *s.Find(joint));
+      double floor = INFINITY;
+      for (int k : keys) floor = std::min(floor, held[k].y());
+      for (size_t f = 0; f < held.size(); ++f) {
+        planted_depth = std::max(planted_depth, floor - held[f].y());
+        free_depth = std::max(free_depth, floor - loose[f].y());
+      }
+    }
+  }
+  std::printf("deepest below the keyed floor: %.2f mm planted, %.2f mm free\n", 1000 * planted_depth, 1000 * free_depth);
+  EXPECT_LT(planted_depth, 0.001);
+  EXPECT_GT(free_depth, 0.005);  // the free fill does sink: the test can fail
+}
+
 }  // namespace
 }  // namespace mocapfill
