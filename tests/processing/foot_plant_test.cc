@@ -17,7 +17,7 @@
 namespace mocapfill {
 namespace {
 
-constexpr double kKeyToleranceDeg = 0.01;
+constexpr double kPlantedKeysToleranceDeg = 0.01;
 
 std::vector<Eigen::Vector3d> TrackOf(const Skeleton& skeleton, const MotionClip& clip, int joint) {
   std::vector<Eigen::Vector3d> track;
@@ -126,7 +126,7 @@ TEST(FootPlant, PlantedFeetStandDuringContacts) {
   ASSERT_TRUE(free_fill.ok() && planted.ok());
   EXPECT_TRUE(free_fill->feet.contacts.empty());
   ASSERT_GE(planted->feet.contacts.size(), 10u);
-  EXPECT_LT(planted->key_error_max_deg, kKeyToleranceDeg);
+  EXPECT_LT(planted->key_error_max_deg, kPlantedKeysToleranceDeg);
   const Skeleton& s = planted->scene.skeleton;
   const MotionClip& out = planted->scene.clips[0];
   const MotionClip& loose = free_fill->scene.clips[0];
@@ -180,7 +180,7 @@ TEST(FootPlant, FeetStayAboveTheKeyedFloor) {
     for (double t : RotationKeysOf(sketch->clips[0], *s.Find(std::string("UpperLeg_") + side)).times_s)
       keys.push_back(NearestFrame(planted->scene.clips[0], t));
     ASSERT_GT(keys.size(), 10u);
-    for (const std::string joint : {std::string("Foot_") + side, std::string("Toes_") + side}) {
+    for (const std::string& joint : {std::string("Foot_") + side, std::string("Toes_") + side}) {
       const std::vector<Eigen::Vector3d> held = TrackOf(s, planted->scene.clips[0], *s.Find(joint));
       const std::vector<Eigen::Vector3d> loose = TrackOf(s, free_fill->scene.clips[0], *s.Find(joint));
       double floor = INFINITY;
