@@ -112,18 +112,35 @@ double SlideBeyondKeys(const std::vector<Eigen::Vector3d>& track, const MotionCl
   return std::hypot(v.x(), v.z());
 }
 
+// The shipped sketch (hips and legs keyed every 8 frames) filled from the default database
+// with the feet left free and planted.
+struct ShippedFills {
+  Result<Scene> sketch = InvalidArgument("not read");
+  Result<SketchFillResult> free_fill = InvalidArgument("not run");
+  Result<SketchFillResult> planted = InvalidArgument("not run");
+};
+
+ShippedFills FillShippedSketchBothWays() {
+  ShippedFills out;
+  out.sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
+  if (!out.sketch.ok()) return out;
+  SketchFillOptions free_options;
+  free_options.plant_feet = false;
+  out.free_fill = FillSketch(*out.sketch, testing::DefaultDb(), free_options);
+  out.planted = FillSketch(*out.sketch, testing::DefaultDb(), {});
+  return out;
+}
+
 // --feet plant (the default): during every heel contact the planter reports, the foot joint
 // stands (mean horizontal speed beyond what the keys ask under 2 cm/s; the free fill slides),
 // keys stay exact, the correction is zero at every key, and the legs do not pop (no larger
 // frame-to-frame turn than the free fill's plus 5 degrees).
 TEST(FootPlant, PlantedFeetStandDuringContacts) {
-  Result<Scene> sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
-  ASSERT_TRUE(sketch.ok());
-  SketchFillOptions free_options;
-  free_options.plant_feet = false;
-  Result<SketchFillResult> free_fill = FillSketch(*sketch, testing::DefaultDb(), free_options);
-  Result<SketchFillResult> planted = FillSketch(*sketch, testing::DefaultDb(), {});
-  ASSERT_TRUE(free_fill.ok() && planted.ok());
+  const ShippedFills fills = FillShippedSketchBothWays();
+  ASSERT_TRUE(fills.sketch.ok() && fills.free_fill.ok() && fills.planted.ok());
+  const Result<Scene>& sketch = fills.sketch;
+  const Result<SketchFillResult>& free_fill = fills.free_fill;
+  const Result<SketchFillResult>& planted = fills.planted;
   EXPECT_TRUE(free_fill->feet.contacts.empty());
   ASSERT_GE(planted->feet.contacts.size(), 10u);
   EXPECT_LT(planted->key_error_max_deg, kPlantedKeysToleranceDeg);
@@ -166,13 +183,11 @@ TEST(FootPlant, PlantedFeetStandDuringContacts) {
 // Planting keeps every frame's heel and toe at or above their floor, the lowest height the
 // leg's keys give them (the slerped legs of the free fill sink below it between keys).
 TEST(FootPlant, FeetStayAboveTheKeyedFloor) {
-  Result<Scene> sketch = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
-  ASSERT_TRUE(sketch.ok());
-  SketchFillOptions free_options;
-  free_options.plant_feet = false;
-  Result<SketchFillResult> free_fill = FillSketch(*sketch, testing::DefaultDb(), free_options);
-  Result<SketchFillResult> planted = FillSketch(*sketch, testing::DefaultDb(), {});
-  ASSERT_TRUE(free_fill.ok() && planted.ok());
+  const ShippedFills fills = FillShippedSketchBothWays();
+  ASSERT_TRUE(fills.sketch.ok() && fills.free_fill.ok() && fills.planted.ok());
+  const Result<Scene>& sketch = fills.sketch;
+  const Result<SketchFillResult>& free_fill = fills.free_fill;
+  const Result<SketchFillResult>& planted = fills.planted;
   const Skeleton& s = planted->scene.skeleton;
   double planted_depth = 0.0, free_depth = 0.0;
   for (const char* side : {"L", "R"}) {
