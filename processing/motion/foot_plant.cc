@@ -14,6 +14,12 @@ namespace {
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
+// 0 at 0, 1 at 1, flat at both ends: weights that ramp without a kink.
+double Smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
 struct LegTracks {
   std::vector<Vector3d> ankle, toe, hips;
 };
@@ -21,10 +27,11 @@ struct LegTracks {
 LegTracks TrackLeg(const Skeleton& skeleton, const MotionClip& clip, const LegForPlanting& leg) {
   LegTracks tracks;
   WorldPose pose;
+  const int hips = skeleton.parent(leg.chain.upper) >= 0 ? skeleton.parent(leg.chain.upper) : leg.chain.upper;
   for (int f = 0; f < clip.num_frames; ++f) {
     ComputeWorldPose(skeleton, clip, f, pose);
     tracks.ankle.push_back(pose.positions[leg.chain.end]);
-    tracks.hips.push_back(pose.positions[skeleton.parent(leg.chain.upper) >= 0 ? skeleton.parent(leg.chain.upper) : leg.chain.upper]);
+    tracks.hips.push_back(pose.positions[hips]);
     if (leg.toe >= 0) tracks.toe.push_back(pose.positions[leg.toe]);
   }
   return tracks;
@@ -83,9 +90,8 @@ struct JointContacts {
 };
 
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
-                           const std::vector<bool>& pinned,
-                           const FootPlantOptions& options, const std::string& side, const std::string& part,
-                           FootPlantReport& report) {
+                           const std::vector<bool>& pinned, const FootPlantOptions& options, const std::string& side,
+                           const std::string& part, FootPlantReport& report) {
   const ContactDetection& detection = options.detection;
   std::vector<double> times(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
@@ -173,8 +179,7 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
         const int e = f + dir * d;
         if (e < 0 || e >= n || (pinned[e] && !held[e].any)) break;
         if (!held[e].any) continue;
-        const double x = 1.0 - double(d) / (fade + 1);
-        const double w = x * x * (3.0 - 2.0 * x);  // smoothstep: no kink where the fade starts or ends
+        const double w = Smoothstep(1.0 - double(d) / (fade + 1));
         if (w > best) {
           best = w;
           out[f].move = w * held[e].move;
@@ -206,23 +211,6 @@ void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, st
 }
 
 }  // namespace
-
-std::vector<double> JointlyKeyedTimes(const MotionClip& clip, const std::vector<int>& joints) {
-  std::vector<double> times;
-  for (size_t i = 0; i < joints.size(); ++i) {
-    const std::vector<double> mine = RotationKeysOf(clip, joints[i]).times_s;
-    if (i == 0) {
-      times = mine;
-      continue;
-    }
-    std::vector<double> both;
-    for (double t : times)
-      if (std::any_of(mine.begin(), mine.end(), [t](double m) { return std::abs(m - t) < 1e-6; })) both.push_back(t);
-    times = std::move(both);
-  }
-  std::sort(times.begin(), times.end());
-  return times;
-}
 
 std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch) {
   using B = HumanoidBone;
@@ -263,10 +251,9 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
     int heel_off = 0;
     for (int f = 0; f < clip.num_frames; ++f) {
       heel_off = heel.down[f] ? 0 : heel_off + 1;
-      const double x = std::min(1.0, double(heel_off) / (fade + 1));
       if (!pinned[f])
         held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
-                         x * x * (3.0 - 2.0 * x));
+                         Smoothstep(double(heel_off) / (fade + 1)));
     }
     std::vector<Correction> corrections = FadeOut(held, pinned, fade);
     if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, corrections);

@@ -65,9 +65,6 @@ struct FootPlantReport {
   double max_correction_m = 0.0;
 };
 
-// The times at which every one of `joints` has a rotation key (RotationKeysOf), ascending.
-std::vector<double> JointlyKeyedTimes(const MotionClip& clip, const std::vector<int>& joints);
-
 // A rig's legs for planting (thigh, shin, foot and toe by its humanoid mapping), each with the
 // times at which `sketch` keys one of its joints.
 std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch);
