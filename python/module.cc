@@ -198,7 +198,8 @@ void BindDatabase(py::module_& m) {
       .def_static(
           "open",
           [](const std::vector<std::string>& paths, double rate_hz, const std::string& map, int threads,
-             const std::string& unit, const std::string& up, const std::function<void(size_t, size_t)>& progress) {
+             const std::string& unit, const std::string& up, bool mirror,
+             const std::function<void(size_t, size_t)>& progress) {
             api::ImportProgress report;
             if (progress) {
               // Worker threads call back; the GIL is taken for the Python callable.
@@ -212,10 +213,10 @@ void BindDatabase(py::module_& m) {
               };
             }
             py::gil_scoped_release release;
-            return api::Database::Open(paths, {rate_hz, map, threads, unit, up}, report);
+            return api::Database::Open(paths, {rate_hz, map, threads, unit, up, mirror}, report);
           },
           py::arg("paths"), py::arg("rate_hz") = 30.0, py::arg("map") = "", py::arg("threads") = 0,
-          py::arg("unit") = "auto", py::arg("up") = "auto", py::arg("progress") = nullptr)
+          py::arg("unit") = "auto", py::arg("up") = "auto", py::arg("mirror") = false, py::arg("progress") = nullptr)
       .def("save", &api::Database::Save, py::call_guard<py::gil_scoped_release>(), py::arg("path"))
       .def_property_readonly("name", &api::Database::name)
       .def_property_readonly("rate_hz", &api::Database::rate_hz)

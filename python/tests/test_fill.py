@@ -100,6 +100,14 @@ def test_database_save_and_open(default_db, tmp_path):
     assert reopened.clip_names == default_db.clip_names and reopened.frame_count == default_db.frame_count
 
 
+def test_database_with_mirrored_clips(fixtures):
+    folder = str(fixtures / "default_db")
+    plain = mocapfill.Database.open(folder)
+    mirrored = mocapfill.Database.open(folder, mirror=True)
+    assert mirrored.clip_count == 2 * plain.clip_count
+    assert sorted(n for n in mirrored.clip_names if n.endswith("#mirror")) == sorted(n + "#mirror" for n in plain.clip_names)
+
+
 def test_retarget_onto_another_rig(fixtures):
     motion = mocapfill.load(str(fixtures / "bvh" / "bandai_walk_normal_001_short.bvh"))
     character = mocapfill.load(str(fixtures / "rigs" / "mixamo_prefixed.bvh"))
