@@ -175,13 +175,8 @@ Result<PcaFitResult> FitFullPoseToKeys(const PcaModel& model, const PcaKeyProble
     }
   result.build_s = SecondsSince(start);
 
-  start = Clock::now();
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &ceres_problem, &summary);
-  result.solve_s = SecondsSince(start);
-  result.report = pca_internal::MakeReport(summary, solver_options);
-  if (summary.termination_type == ceres::FAILURE || summary.termination_type == ceres::USER_FAILURE)
-    return NumericalFailure("full-pose PCA fit failed: " + summary.message);
+  RETURN_IF_ERROR(
+      pca_internal::SolveFit(solver_options, "full-pose PCA fit", ceres_problem, result.solve_s, result.report));
   result.poses = Eigen::Map<const RowMajorMatrix>(s.y.data(), s.frames, model.pose_dim());
   if (!result.poses.allFinite()) return NumericalFailure("full-pose PCA fit produced non-finite poses");
   result.coefficients = ProjectOntoModel(model, result.poses);

@@ -129,13 +129,7 @@ Result<PcaFitResult> FitPcaToKeys(const PcaModel& model, const PcaKeyProblem& pr
   AddSubspaceResiduals(model, problem, options, c, ceres_problem);
   result.build_s = SecondsSince(start);
 
-  start = Clock::now();
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &ceres_problem, &summary);
-  result.solve_s = SecondsSince(start);
-  result.report = pca_internal::MakeReport(summary, solver_options);
-  if (summary.termination_type == ceres::FAILURE || summary.termination_type == ceres::USER_FAILURE)
-    return NumericalFailure("PCA fit failed: " + summary.message);
+  RETURN_IF_ERROR(pca_internal::SolveFit(solver_options, "PCA fit", ceres_problem, result.solve_s, result.report));
   result.coefficients = Eigen::Map<const RowMajorMatrix>(c.data(), problem.num_frames, model.num_components());
   if (!result.coefficients.allFinite()) return NumericalFailure("PCA fit produced non-finite coefficients");
   result.poses = ReconstructFromModel(model, result.coefficients);

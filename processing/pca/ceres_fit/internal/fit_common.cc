@@ -1,10 +1,12 @@
 #include "processing/pca/ceres_fit/internal/fit_common.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <thread>
 
 #include "processing/core/rotation.h"
+#include "processing/core/stopwatch.h"
 
 namespace mocapfill {
 
@@ -129,6 +131,18 @@ Result<ceres::Solver::Options> MakeSolverOptions(const PcaFitOptions& options) {
   std::string error;
   if (!o.IsValid(&error)) return Internal("ceres options: " + error);
   return o;
+}
+
+Status SolveFit(const ceres::Solver::Options& options, const std::string& fit, ceres::Problem& problem,
+                double& solve_s, SolverReport& report) {
+  const auto start = std::chrono::steady_clock::now();
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  solve_s = SecondsSince(start);
+  report = MakeReport(summary, options);
+  if (summary.termination_type == ceres::FAILURE || summary.termination_type == ceres::USER_FAILURE)
+    return NumericalFailure(fit + " failed: " + summary.message);
+  return OkStatus();
 }
 
 SolverReport MakeReport(const ceres::Solver::Summary& summary, const ceres::Solver::Options& options) {

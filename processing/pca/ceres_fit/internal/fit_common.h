@@ -27,6 +27,11 @@ Result<ceres::Solver::Options> MakeSolverOptions(const PcaFitOptions& options);
 
 SolverReport MakeReport(const ceres::Solver::Summary& summary, const ceres::Solver::Options& options);
 
+// Solves `problem`, timing the solve (solve_s) and keeping its summary as plain data (report);
+// kNumericalFailure naming `fit` ("PCA fit", "full-pose PCA fit") when Ceres fails.
+Status SolveFit(const ceres::Solver::Options& options, const std::string& fit, ceres::Problem& problem,
+                double& solve_s, SolverReport& report);
+
 // Maps a model joint to where its channels live (subspace coefficients or a joint block).
 using SourceFactory = std::function<JointSource(int joint)>;
 
