@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <optional>
 #include <set>
 
 #include "processing/fill/fill_engine.h"
@@ -43,18 +44,22 @@ Status ScoreClips(const std::vector<LabeledClip>& clips, const std::vector<int>&
                   const std::string& half, const MotionDatabase& db, const EvaluationOptions& options, int total,
                   EvaluationResult& result) {
   FillEngine engine(db);
+  // The database's legs for planting, found once per fold (every clip's sketch is on its rig).
+  std::optional<RigMapping> mapping;
+  if (options.plant_feet) {
+    ASSIGN_OR_RETURN(RigMapping found, MapHumanoid(db.skeleton(), {}));
+    mapping = std::move(found);
+  }
   for (int index : tests) {
     const LabeledClip& c = clips[index];
     const std::string content = Label(c, "content");
     if (!options.only_contents.empty() && !Contains(options.only_contents, content)) continue;
     ASSIGN_OR_RETURN(const MotionClip sketch, MakeSketch(c.skeleton, c.clip, options.sketch));
+    const std::vector<LegForPlanting> legs = mapping ? LegsToPlant(*mapping, sketch) : std::vector<LegForPlanting>{};
     for (const NamedMethod& method : options.methods) {
       const auto start = std::chrono::steady_clock::now();
       Result<FillResult> filled = engine.Fill(sketch, method.options);
-      if (filled.ok() && options.plant_feet) {
-        ASSIGN_OR_RETURN(const RigMapping mapping, MapHumanoid(db.skeleton(), {}));
-        PlantFeet(db.skeleton(), LegsToPlant(mapping, sketch), options.feet, filled->clip);
-      }
+      if (filled.ok() && options.plant_feet) PlantFeet(db.skeleton(), legs, options.feet, filled->clip);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!filled.ok()) return filled.status().WithContext("clip '" + c.clip.name + "', method " + method.name);
       ASSIGN_OR_RETURN(FillMetrics metrics, ScoreFill(c.skeleton, c.clip, sketch, filled->clip, db.root_joint()));
