@@ -77,8 +77,8 @@ void PrintProtocolHeader(const EvaluationResult& r, const EvalReportContext& c) 
     std::printf("  reporting half (%zu): %s; each held out against every other %s value of both halves\n",
                 r.halves.reporting.size(), JoinNames(r.halves.reporting).c_str(), c.loso.c_str());
   }
-  std::printf("intervals: %.0f %% percentile bootstrap over clips (%d resamples, seed %llu); below mean: unkeyed "
-              "MPJPE below mean's, paired by clip\n",
+  std::printf("intervals: %.0f %% percentile bootstrap, held-out folds resampled, then clips within each (%d "
+              "resamples, seed %llu); below mean: unkeyed MPJPE below mean's, paired by clip\n",
               100.0 * c.bootstrap.level, c.bootstrap.resamples,
               static_cast<unsigned long long>(c.bootstrap.seed));
 }
@@ -192,7 +192,8 @@ void PrintEvalJson(const EvaluationResult& r, const EvalReportContext& c) {
                                      : Json(nullptr)},
                      {"bootstrap", {{"resamples", c.bootstrap.resamples},
                                     {"seed", c.bootstrap.seed},
-                                    {"level", c.bootstrap.level}}},
+                                    {"level", c.bootstrap.level},
+                                    {"unit", "folds, then clips within each"}}},
                      {"default_method", c.default_method}};
   Json summary = Json::array();
   for (const SummaryRow& row : r.summary) summary.push_back(SummaryJson(row));

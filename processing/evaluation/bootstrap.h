@@ -14,6 +14,12 @@ struct BootstrapOptions {
   double level = 0.95;      // central coverage of the percentile interval
 };
 
+// Which items are drawn together: items of one group (the clips of one held-out style) are not
+// independent, so an interval meant for an unseen group resamples groups with replacement
+// first, then items with replacement within each drawn group (a two-stage cluster
+// bootstrap). Empty: every item is its own group (the plain bootstrap over items).
+using BootstrapGroups = std::vector<int>;
+
 struct Interval {
   double lo = 0.0;
   double hi = 0.0;
@@ -21,13 +27,15 @@ struct Interval {
 
 // Interval of the mean of `values`: means of `resamples` draws with replacement of
 // values.size() values, cut at the (1 - level) / 2 and (1 + level) / 2 percentiles (linear
-// between order statistics). Empty input gives {0, 0}.
-Interval BootstrapMean(const std::vector<double>& values, const BootstrapOptions& options = {});
+// between order statistics). Empty input gives {0, 0}. `groups`, when given, has one entry per
+// value.
+Interval BootstrapMean(const std::vector<double>& values, const BootstrapOptions& options = {},
+                       const BootstrapGroups& groups = {});
 
 // The same for the weighted mean sum(w x) / sum(w) (a figure pooled over frames while clips
 // are what is resampled). Requires equal sizes; empty input or zero weights give {0, 0}.
 Interval BootstrapWeightedMean(const std::vector<double>& values, const std::vector<double>& weights,
-                               const BootstrapOptions& options = {});
+                               const BootstrapOptions& options = {}, const BootstrapGroups& groups = {});
 
 // 100 * (mean(reference) - mean(values)) / mean(reference): how far `values` lie below the
 // reference, in percent, with the paired bootstrap interval (each draw resamples indices and
@@ -38,6 +46,6 @@ struct RelativeDifference {
   Interval interval;
 };
 RelativeDifference BootstrapPercentBelow(const std::vector<double>& values, const std::vector<double>& reference,
-                                         const BootstrapOptions& options = {});
+                                         const BootstrapOptions& options = {}, const BootstrapGroups& groups = {});
 
 }  // namespace mocapfill

@@ -70,7 +70,16 @@ RowScores SelectRow(const std::vector<ClipScore>& scores, const std::string& hal
   return out;
 }
 
+// Clips of one held-out fold share a style, so they are resampled together (bootstrap.h).
+BootstrapGroups FoldGroups(const std::vector<const ClipScore*>& scores) {
+  std::map<std::string, int> ids;
+  BootstrapGroups groups;
+  for (const ClipScore* s : scores) groups.push_back(ids.emplace(s->fold, static_cast<int>(ids.size())).first->second);
+  return groups;
+}
+
 void AddIntervals(const RowScores& selected, const BootstrapOptions& bootstrap, SummaryRow& row) {
+  const BootstrapGroups groups = FoldGroups(selected.scores);
   for (const MetricField& field : AveragedMetricFields()) {
     std::vector<double> values, contact_frames;
     for (const ClipScore* s : selected.scores) {
@@ -78,8 +87,8 @@ void AddIntervals(const RowScores& selected, const BootstrapOptions& bootstrap, 
       contact_frames.push_back(static_cast<double>(s->metrics.foot_contact_frames));
     }
     row.intervals.push_back({field.name, PooledOverContacts(field.field)
-                                             ? BootstrapWeightedMean(values, contact_frames, bootstrap)
-                                             : BootstrapMean(values, bootstrap)});
+                                             ? BootstrapWeightedMean(values, contact_frames, bootstrap, groups)
+                                             : BootstrapMean(values, bootstrap, groups)});
   }
   std::vector<double> values, reference;
   for (size_t i = 0; i < selected.scores.size(); ++i) {
@@ -88,7 +97,7 @@ void AddIntervals(const RowScores& selected, const BootstrapOptions& bootstrap, 
     reference.push_back(selected.baseline[i]->metrics.mpjpe_unkeyed_cm);
   }
   row.has_below_mean = !values.empty() && row.method != kBaselineMethod;
-  row.below_mean = BootstrapPercentBelow(values, reference, bootstrap);
+  row.below_mean = BootstrapPercentBelow(values, reference, bootstrap, groups);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // What the evaluation reports from its per-clip scores: means per (half, method, category)
-// with bootstrap intervals and the paired relative difference to the `mean` baseline, and
+// with bootstrap intervals (held-out folds resampled, then clips within each) and the paired
+// relative difference to the `mean` baseline, and
 // per-fold cells, so that "never above `mean` in any style" can be checked cell by cell.
 #pragma once
 

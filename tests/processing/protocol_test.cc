@@ -142,6 +142,32 @@ TEST(Bootstrap, PercentBelowIsPairedByIndex) {
   EXPECT_GT(noisy.interval.hi - noisy.interval.lo, 1e-6);
 }
 
+// Consecutive frames of a walk are alike, as the clips of one style are: resampling blocks of
+// 5 frames (then frames within them) gives a wider interval than resampling frames, which
+// treats them as independent. One group per item is the plain bootstrap, draw for draw.
+TEST(Bootstrap, GroupsOfAlikeItemsWidenTheInterval) {
+  const std::vector<double> heights = HipHeights();
+  ASSERT_GT(heights.size(), 200u);
+  BootstrapGroups blocks, singles;
+  for (size_t i = 0; i < heights.size(); ++i) {
+    blocks.push_back(static_cast<int>(i / 5));
+    singles.push_back(static_cast<int>(i));
+  }
+  const Interval plain = BootstrapMean(heights);
+  const Interval single = BootstrapMean(heights, {}, singles);
+  EXPECT_EQ(single.lo, plain.lo);
+  EXPECT_EQ(single.hi, plain.hi);
+  const Interval grouped = BootstrapMean(heights, {}, blocks);
+  EXPECT_LT(grouped.lo, SampleMean(heights));
+  EXPECT_GT(grouped.hi, SampleMean(heights));
+  EXPECT_GT(grouped.hi - grouped.lo, 1.5 * (plain.hi - plain.lo));
+  std::vector<double> lower;
+  for (double h : heights) lower.push_back(0.9 * h);
+  const RelativeDifference exact = BootstrapPercentBelow(lower, heights, {}, blocks);
+  EXPECT_NEAR(exact.interval.lo, 10.0, 1e-9);
+  EXPECT_NEAR(exact.interval.hi, 10.0, 1e-9);
+}
+
 TEST(FoldPlan, HalvesAreSortedAlternatedAndIndependentOfOrder) {
   const SplitHalves h = SplitFoldValues({"tired", "happy", "normal", "happy", "angry"});
   EXPECT_EQ(h.tuning, (std::vector<std::string>{"angry", "normal"}));
