@@ -19,10 +19,13 @@ std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int ble
 }
 
 // Cross-fade weight of sketch frame t for fragment f extended by `margin` frames per side:
-// 1 inside the fragment, falling linearly to 0 just beyond the margin.
+// 1 inside the fragment, falling to 0 just beyond the margin along a smoothstep. A linear ramp
+// has a kink at each end, and the blend of two takes turns it into a jolt of the synthesised
+// joints wherever a fragment starts or stops counting.
 double FadeWeight(const SketchFragment& f, int margin, int t) {
   const int outside = t < f.first ? f.first - t : t > f.last ? t - f.last : 0;
-  return 1.0 - double(outside) / (margin + 1);
+  const double x = 1.0 - double(outside) / (margin + 1);
+  return x * x * (3.0 - 2.0 * x);
 }
 
 // Adds weight * fade(t) * (candidate's channels stretched onto sketch frames [from, to)) to

@@ -126,6 +126,17 @@ void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const F
   BlendTowards(prior, prior_weight.cwiseMax(texture_weight), keyed, out);
 }
 
+// Leaves the `bands` finest pyramid bands out of the listed channels of `out` (replaces them by
+// G_bands): above 7.5 Hz at 30 Hz the blend of other takes carries the jolts of its own
+// candidates and cross-fades, not detail of the motion being filled.
+void DropFinestBands(const std::vector<int>& channels, int bands, Eigen::MatrixXd& out) {
+  if (bands <= 0 || channels.empty() || out.rows() < 2) return;
+  Eigen::MatrixXd smooth(out.rows(), channels.size());
+  for (size_t i = 0; i < channels.size(); ++i) smooth.col(i) = out.col(channels[i]);
+  for (int level = 0; level < bands; ++level) smooth = SmoothLevel(smooth, level, PyramidBoundary::kClamp);
+  for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = smooth.col(i);
+}
+
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, const SketchSignals& s, const FragmentFillOptions& options,
                          Eigen::MatrixXd& out, FragmentFillReport& report, StageTimer& timer) {
@@ -185,6 +196,11 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       for (int j : group.joints) available[j] = 1;
     }
   }
+  std::vector<int> synthesized;
+  for (int c = 0; c < 3 * db.num_joints(); ++c)
+    if (!fixed[c / 3]) synthesized.push_back(c);
+  synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
+  DropFinestBands(synthesized, options.synthesized_finest_band, out);
   if (options.texture) {
     std::vector<int> keyed_channels;
     for (int c = 0; c < 3 * db.num_joints(); ++c)

@@ -18,6 +18,8 @@ Status FragmentFillOptions::Validate() const {
   if (blend < 1 || blend > candidates) return RangeError("blend", blend, "[1, candidates]");
   if (texture_finest_band < 0 || texture_finest_band > 16)
     return RangeError("texture_finest_band", texture_finest_band, "[0, 16]");
+  if (synthesized_finest_band < 0 || synthesized_finest_band > 16)
+    return RangeError("synthesized_finest_band", synthesized_finest_band, "[0, 16]");
   if (!(fragment_band_hz > 0.0) || !std::isfinite(fragment_band_hz))
     return RangeError("fragment_band_hz", fragment_band_hz, "(0, inf)");
   if (!(match_band_hz > 0.0) || !std::isfinite(match_band_hz))

@@ -66,17 +66,20 @@ struct FragmentFillOptions {
   // Texture bands start here: 1 leaves out the finest (above 7.5 Hz at 30 Hz), another take's
   // foot impacts and tremor, which made the fill jerkier than capture (texture_channels.h).
   int texture_finest_band = 1;
+  // Synthesised channels lose this many finest bands (1: above 7.5 Hz at 30 Hz) after assembly:
+  // there the blend holds its own jolts, not captured detail of this motion.
+  int synthesized_finest_band = 1;
   bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
   int candidates = 128;     // K best candidates kept per fragment
   int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching
-  double context_fraction = 0.5;  // matching window extends each fragment by this share per side
+  double context_fraction = 0.0;  // matching window extends each fragment by this share per side
   double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
   double max_length_ratio = 1.5;
   double seam_window_s = 0.25;     // seam smoothing reach on each side
-  double crossfade = 1.0;          // > 0: fragments overlap by this share of their length and are cross-faded
+  double crossfade = 1.5;          // > 0: fragments overlap by this share of their length and are cross-faded
   double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
   int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
   bool root_drives = false;        // hierarchical: the keyed root's tilt always among the drivers
