@@ -106,7 +106,7 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     }
     // A foot this far from where it would be held is not standing (a swing foot passing low
     // and slow near a key): holding it would drag the leg and pop where the hold ends.
-    if (farthest > options.max_correction_m) {
+    if (farthest > (part == "toe" ? options.max_toe_correction_m : options.max_correction_m)) {
       std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
       ++report.contacts_skipped;
       continue;
@@ -166,8 +166,9 @@ Correction HoldAt(int f, const LegTracks& tracks, const JointContacts& heel, con
   return c;
 }
 
-// Beyond a contact the correction of its edge frame fades out over `fade` frames (smoothstep);
-// a key of the leg ends the fade (the key's pose is the animator's).
+// Beyond a contact the correction of its edge frame fades out over `fade` frames (smoothstep),
+// or sooner where a key of the leg comes first: the fade then reaches zero at the key (the
+// key's pose is the animator's) rather than being cut off there.
 std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::vector<bool>& pinned, int fade) {
   std::vector<Correction> out = held;
   const int n = static_cast<int>(held.size());
@@ -179,7 +180,16 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
         const int e = f + dir * d;
         if (e < 0 || e >= n || (pinned[e] && !held[e].any)) break;
         if (!held[e].any) continue;
-        const double w = Smoothstep(1.0 - double(d) / (fade + 1));
+        int span = fade;  // frames from the contact's edge to zero weight
+        for (int q = d + 1; q <= fade; ++q) {
+          const int g = e - dir * q;
+          if (g < 0 || g >= n) break;
+          if (pinned[g] && !held[g].any) {
+            span = q - 1;
+            break;
+          }
+        }
+        const double w = Smoothstep(1.0 - double(d) / (span + 1));
         if (w > best) {
           best = w;
           out[f].move = w * held[e].move;
@@ -248,12 +258,21 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
       AnchorToesOnHeels(pinned, tracks, heel, toe);
     }
     std::vector<Correction> held(clip.num_frames);
-    int heel_off = 0;
+    // Heel off, the foot turns back over `fade` frames, or by the next key if that comes first.
+    int heel_off = 0, turn_span = fade;
     for (int f = 0; f < clip.num_frames; ++f) {
       heel_off = heel.down[f] ? 0 : heel_off + 1;
+      if (heel_off == 1) {
+        turn_span = fade;
+        for (int q = 0; q < fade && f + q < clip.num_frames; ++q)
+          if (pinned[f + q]) {
+            turn_span = q;
+            break;
+          }
+      }
       if (!pinned[f])
         held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
-                         Smoothstep(double(heel_off) / (fade + 1)));
+                         Smoothstep(double(heel_off) / (turn_span + 1)));
     }
     std::vector<Correction> corrections = FadeOut(held, pinned, fade);
     if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, corrections);

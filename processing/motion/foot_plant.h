@@ -38,6 +38,9 @@ struct FootPlantOptions {
   ContactDetection detection;
   double fade_s = 0.1;  // the correction fades out over this beyond a contact
   double max_correction_m = 0.1;  // contacts needing a larger move are not held
+  // Toe contacts tighter still: a toe held far behind the fill's during push-off straightens
+  // the leg, and its release turned the knee faster than capture does.
+  double max_toe_correction_m = 0.06;
   // Every frame's heel and toe are kept at or above their floor (their lowest heights at the
   // leg's keys): between keys, slerped legs and a linearly interpolated root sink them.
   bool keep_above_floor = true;
@@ -61,7 +64,7 @@ struct FootPlantReport {
   std::vector<FootContact> contacts;
   std::vector<PlantedLeg> legs;
   int frames_held = 0;  // leg-frames corrected (contacts and fades)
-  int contacts_skipped = 0;  // found but needing more than max_correction_m
+  int contacts_skipped = 0;  // found but needing more than max_correction_m (toes: max_toe_correction_m)
   double max_correction_m = 0.0;
 };
 
