@@ -28,7 +28,7 @@ struct AssemblyInputs {
 // exp(-d / mean d) over the lead and the nearest others. Without cross-fade a fragment owns
 // [first, last) (the last one its end frame too); with it, each fragment's candidates extend
 // `crossfade` of its length beyond both ends (the takes continue there) and overlapping
-// fragments are mixed with linear fade weights, so there is no seam to smooth. Returns how
+// fragments are mixed with smoothstep fade weights, so there is no seam to smooth. Returns how
 // many candidates each fragment blended.
 std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& out);
 

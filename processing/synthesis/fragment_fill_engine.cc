@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/core/kinematics.h"
 #include "processing/filtering/pyramid.h"
 #include "processing/synthesis/assembly.h"
 #include "processing/synthesis/baselines.h"
@@ -137,6 +138,21 @@ void DropFinestBands(const std::vector<int>& channels, int bands, Eigen::MatrixX
   for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = smooth.col(i);
 }
 
+// Chains hanging well below the motion root in the database's mean pose (the legs). Their
+// steps must follow the sketch's own progression, and averaging many takes' strides of
+// slightly different phase blurs them, so they blend fewer candidates (leg_blend).
+std::vector<std::uint8_t> HangingJoints(const MotionDatabase& db) {
+  MotionClip mean = MotionClip::RestPose(db.skeleton(), 1, db.rate_hz());
+  for (int j = 0; j < db.num_joints(); ++j) mean.rotation(0, j) = db.joint_means()[j];
+  const std::vector<Eigen::Vector3d> p = ComputeWorldPositions(db.skeleton(), mean);
+  const double root = p[db.root_joint()].y();
+  double lowest = root;
+  for (const Eigen::Vector3d& q : p) lowest = std::min(lowest, q.y());
+  std::vector<std::uint8_t> hanging(db.num_joints(), 0);
+  for (int j = 0; j < db.num_joints(); ++j) hanging[j] = p[j].y() < root - 0.5 * (root - lowest);
+  return hanging;
+}
+
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, const SketchSignals& s, const FragmentFillOptions& options,
                          Eigen::MatrixXd& out, FragmentFillReport& report, StageTimer& timer) {
@@ -176,6 +192,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     std::vector<std::uint8_t> available = fixed, keyed(db.num_joints(), 0);
     for (int j = 0; j < db.num_joints(); ++j) keyed[j] = s.keyed[3 * j];
     bool first = true;
+    const std::vector<std::uint8_t> hanging = HangingJoints(db);
     for (const JointGroup& group : PlanGroups(db.skeleton(), fixed)) {
       std::vector<DrivenChannel> driven =
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
@@ -184,8 +201,9 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
       first = false;
-      const GroupResult r = SynthesiseGroup(ctx, driven, targets, options.blend, out, timer);
-      ReportGroup(ctx, group.name, r, options.blend, report);
+      const int blend = hanging[group.joints.back()] ? std::min(options.blend, options.leg_blend) : options.blend;
+      const GroupResult r = SynthesiseGroup(ctx, driven, targets, blend, out, timer);
+      ReportGroup(ctx, group.name, r, blend, report);
       std::string drivers;
       for (size_t i = 0; i < driven.size(); i += 3) {
         const bool features = driven[i].channel >= 3 * db.num_joints();

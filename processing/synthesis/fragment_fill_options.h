@@ -72,6 +72,7 @@ struct FragmentFillOptions {
   bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
   int candidates = 128;     // K best candidates kept per fragment
   int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)
+  int leg_blend = 32;       // hierarchical: at most this many for chains hanging below the root (legs)
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching
