@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "processing/core/kinematics.h"
+#include "processing/core/smoothstep.h"
 #include "processing/motion/key_fidelity.h"
 
 namespace mocapfill {
@@ -13,12 +14,6 @@ namespace {
 
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
-
-// 0 at 0, 1 at 1, flat at both ends: weights that ramp without a kink.
-double Smoothstep(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
-}
 
 struct LegTracks {
   std::vector<Vector3d> ankle, toe, hips;

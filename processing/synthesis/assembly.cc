@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/core/smoothstep.h"
+
 namespace mocapfill {
 
 namespace {
@@ -24,8 +26,7 @@ std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int ble
 // joints wherever a fragment starts or stops counting.
 double FadeWeight(const SketchFragment& f, int margin, int t) {
   const int outside = t < f.first ? f.first - t : t > f.last ? t - f.last : 0;
-  const double x = 1.0 - double(outside) / (margin + 1);
-  return x * x * (3.0 - 2.0 * x);
+  return Smoothstep(1.0 - double(outside) / (margin + 1));
 }
 
 // Adds weight * fade(t) * (candidate's channels stretched onto sketch frames [from, to)) to

@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/core/smoothstep.h"
+
 namespace mocapfill {
 
 namespace {
 
 // 0 below `from`, 1 from `to` on, smoothstep in between.
-double Ramp(double share, double from, double to) {
-  const double t = std::clamp((share - from) / (to - from), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
+double Ramp(double share, double from, double to) { return Smoothstep((share - from) / (to - from)); }
 
 }  // namespace
 
