@@ -161,6 +161,17 @@ Correction HoldAt(int f, const LegTracks& tracks, const JointContacts& heel, con
   return c;
 }
 
+// Steps of `step` frames from `from` to the first key of the leg, at most `limit` (limit + 1
+// when no key comes that soon or the clip ends first): a fade or a turn must be over by then.
+int StepsToKey(const std::vector<bool>& pinned, int from, int step, int limit) {
+  for (int q = 1; q <= limit; ++q) {
+    const int g = from + step * q;
+    if (g < 0 || g >= static_cast<int>(pinned.size())) break;
+    if (pinned[g]) return q;
+  }
+  return limit + 1;
+}
+
 // Beyond a contact the correction of its edge frame fades out over `fade` frames (smoothstep),
 // or sooner where a key of the leg comes first: the fade then reaches zero at the key (the
 // key's pose is the animator's) rather than being cut off there.
@@ -175,15 +186,7 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
         const int e = f + dir * d;
         if (e < 0 || e >= n || (pinned[e] && !held[e].any)) break;
         if (!held[e].any) continue;
-        int span = fade;  // frames from the contact's edge to zero weight
-        for (int q = d + 1; q <= fade; ++q) {
-          const int g = e - dir * q;
-          if (g < 0 || g >= n) break;
-          if (pinned[g] && !held[g].any) {
-            span = q - 1;
-            break;
-          }
-        }
+        const int span = StepsToKey(pinned, e, -dir, fade) - 1;  // from the contact's edge to zero weight
         const double w = Smoothstep(1.0 - double(d) / (span + 1));
         if (w > best) {
           best = w;
@@ -257,14 +260,7 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
     int heel_off = 0, turn_span = fade;
     for (int f = 0; f < clip.num_frames; ++f) {
       heel_off = heel.down[f] ? 0 : heel_off + 1;
-      if (heel_off == 1) {
-        turn_span = fade;
-        for (int q = 0; q < fade && f + q < clip.num_frames; ++q)
-          if (pinned[f + q]) {
-            turn_span = q;
-            break;
-          }
-      }
+      if (heel_off == 1) turn_span = StepsToKey(pinned, f - 1, 1, fade) - 1;
       if (!pinned[f])
         held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
                          Smoothstep(double(heel_off) / (turn_span + 1)));
