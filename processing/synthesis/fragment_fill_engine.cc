@@ -178,14 +178,17 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   const std::vector<std::uint8_t> fixed = FixedJoints(db, s);
   std::vector<int> root_targets;
   if (!RootFeaturesKeyed(db, s)) root_targets = RootFeatureChannels(db);
+  // Every channel the fill synthesises: the joints no key fixes, and the root features when
+  // the root is not keyed.
+  std::vector<int> joints;
+  for (int j = 0; j < db.num_joints(); ++j)
+    if (!fixed[j]) joints.push_back(j);
+  std::vector<int> synthesized = JointChannels(joints);
+  synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
   if (options.method == FillMethod::kFragment) {
-    std::vector<int> joints;
-    for (int j = 0; j < db.num_joints(); ++j)
-      if (!fixed[j]) joints.push_back(j);
-    std::vector<int> targets = JointChannels(joints);
-    targets.insert(targets.end(), root_targets.begin(), root_targets.end());
-    if (!targets.empty()) {
-      const GroupResult r = SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), targets, options.blend, out, timer);
+    if (!synthesized.empty()) {
+      const GroupResult r =
+          SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), synthesized, options.blend, out, timer);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
     }
   } else {
@@ -214,10 +217,6 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       for (int j : group.joints) available[j] = 1;
     }
   }
-  std::vector<int> synthesized;
-  for (int c = 0; c < 3 * db.num_joints(); ++c)
-    if (!fixed[c / 3]) synthesized.push_back(c);
-  synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
   DropFinestBands(synthesized, options.synthesized_finest_band, out);
   if (options.texture) {
     std::vector<int> keyed_channels;
