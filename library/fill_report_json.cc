@@ -62,7 +62,7 @@ nlohmann::ordered_json ReportObject(const SketchFillResult& result, const std::s
   nlohmann::ordered_json contacts = nlohmann::ordered_json::array();
   for (const FootContact& c : result.feet.contacts)
     contacts.push_back({{"foot", c.side}, {"part", c.part}, {"from_s", c.start_s}, {"to_s", c.end_s},
-                        {"keys", c.keys}, {"max_correction_m", c.max_correction_m}});
+                        {"keys", c.keys}, {"max_correction_m", c.max_correction_m}, {"found_on", c.found_on}});
   nlohmann::ordered_json legs = nlohmann::ordered_json::array();
   for (const PlantedLeg& leg : result.feet.legs) legs.push_back({{"foot", leg.side}, {"correction_m", leg.correction_m}});
   out["feet"] = {{"contacts", contacts}, {"frames_held", result.feet.frames_held},

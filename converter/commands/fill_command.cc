@@ -68,9 +68,13 @@ void PrintSummary(const SketchFillResult& result) {
                textured, synthesized, kept, r.sketch_fragments, r.seams);
   std::fprintf(stderr, "  keys: mean error %.4f deg, max %.4f deg (read back from the output, at the keys' own times)\n",
                result.key_error_mean_deg, result.key_error_max_deg);
-  if (!result.feet.contacts.empty())
-    std::fprintf(stderr, "  feet: %zu contacts held, %d leg-frames, largest correction %.1f cm\n",
-                 result.feet.contacts.size(), result.feet.frames_held, 100.0 * result.feet.max_correction_m);
+  if (!result.feet.contacts.empty()) {
+    const auto from_takes = std::count_if(result.feet.contacts.begin(), result.feet.contacts.end(),
+                                          [](const FootContact& c) { return c.found_on == "takes"; });
+    std::fprintf(stderr, "  feet: %zu contacts held (%td where the matched takes stood), %d leg-frames, largest "
+                 "correction %.1f cm\n",
+                 result.feet.contacts.size(), from_takes, result.feet.frames_held, 100.0 * result.feet.max_correction_m);
+  }
   if (r.coverage.measured && !r.coverage.fragments.empty()) {
     const auto less = [](const FragmentCoverage& a, const FragmentCoverage& b) { return a.unexplained < b.unexplained; };
     const double worst =

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "processing/fill/fill_engine.h"
+#include "processing/fill/synthesized_contacts.h"
 #include "processing/retargeting/rig_mapping.h"
 #include "processing/synthesis/coverage.h"
 
@@ -59,7 +60,11 @@ Status ScoreClips(const std::vector<LabeledClip>& clips, const std::vector<int>&
     for (const NamedMethod& method : options.methods) {
       const auto start = std::chrono::steady_clock::now();
       Result<FillResult> filled = engine.Fill(sketch, method.options);
-      if (filled.ok() && options.plant_feet) PlantFeet(db.skeleton(), legs, options.feet, filled->clip);
+      if (filled.ok() && options.plant_feet) {
+        std::vector<LegForPlanting> planted = legs;
+        GiveSynthesizedContacts(filled->report, filled->clip, *mapping, filled->clip, planted);
+        PlantFeet(db.skeleton(), planted, options.feet, filled->clip);
+      }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!filled.ok()) return filled.status().WithContext("clip '" + c.clip.name + "', method " + method.name);
       ASSIGN_OR_RETURN(FillMetrics metrics, ScoreFill(c.skeleton, c.clip, sketch, filled->clip, db.root_joint()));

@@ -30,6 +30,11 @@ std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, cons
                  HorizontalSpeed(track, times_s, f) <=
                      std::max(options.max_speed_m_per_s,
                               body ? options.max_speed_share_of_body * HorizontalSpeed(*body, times_s, f) : 0.0);
+  TidyContacts(times_s, options, contact);
+  return contact;
+}
+
+void TidyContacts(const std::vector<double>& times_s, const ContactDetection& options, std::vector<bool>& contact) {
   // A contact flickering off for a frame or two is one contact; a blip of a frame or two is
   // none. Either would make the held foot jump from one anchor to another.
   std::vector<std::pair<int, int>> runs = ContactRuns(contact);
@@ -39,7 +44,6 @@ std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, cons
   for (const auto& [first, last] : ContactRuns(contact))
     if (times_s[last] - times_s[first] < options.min_duration_s)
       for (int f = first; f <= last; ++f) contact[f] = false;
-  return contact;
 }
 
 std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact) {

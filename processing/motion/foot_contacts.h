@@ -28,6 +28,10 @@ std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, cons
                                  double floor_y, const ContactDetection& options,
                                  const std::vector<Eigen::Vector3d>* body = nullptr);
 
+// Joins contacts `max_gap_s` apart or closer and drops those shorter than `min_duration_s`
+// (DetectContacts does this to its own; contacts found otherwise get the same clean-up).
+void TidyContacts(const std::vector<double>& times_s, const ContactDetection& options, std::vector<bool>& contact);
+
 // Maximal runs of true frames: [first, last] pairs, ascending.
 std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact);
 

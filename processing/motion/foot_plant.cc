@@ -85,12 +85,14 @@ struct JointContacts {
 };
 
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
-                           const std::vector<bool>& pinned, const FootPlantOptions& options, const std::string& side,
-                           const std::string& part, FootPlantReport& report) {
+                           const std::vector<bool>& pinned, const std::vector<bool>& given,
+                           const FootPlantOptions& options, const std::string& side, const std::string& part,
+                           FootPlantReport& report) {
   const ContactDetection& detection = options.detection;
   std::vector<double> times(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
-  JointContacts out{DetectContacts(track, times, FloorOf(track, pinned), detection, &hips),
+  JointContacts out{given.size() == track.size() ? given
+                                                 : DetectContacts(track, times, FloorOf(track, pinned), detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
@@ -101,13 +103,16 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     }
     // A foot this far from where it would be held is not standing (a swing foot passing low
     // and slow near a key): holding it would drag the leg and pop where the hold ends.
-    if (farthest > (part == "toe" ? options.max_toe_correction_m : options.max_correction_m)) {
+    const double limit = given.size() == track.size() ? options.max_given_correction_m
+                         : part == "toe"                ? options.max_toe_correction_m
+                                                        : options.max_correction_m;
+    if (farthest > limit) {
       std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
       ++report.contacts_skipped;
       continue;
     }
     std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
-    FootContact c{side, part, times[first], times[last], 0, 0.0};
+    FootContact c{side, part, times[first], times[last], 0, 0.0, given.size() == track.size() ? "takes" : "fill"};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
     report.contacts.push_back(c);
   }
@@ -228,7 +233,7 @@ std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionC
         std::pair{"right", std::array{B::kRightUpperLeg, B::kRightLowerLeg, B::kRightFoot, B::kRightToes}}}) {
     if (!mapping.has(bones[0]) || !mapping.has(bones[1]) || !mapping.has(bones[2])) continue;
     LegForPlanting leg{side, {mapping.joint(bones[0]), mapping.joint(bones[1]), mapping.joint(bones[2])},
-                       mapping.has(bones[3]) ? mapping.joint(bones[3]) : -1, {}};
+                       mapping.has(bones[3]) ? mapping.joint(bones[3]) : -1, {}, {}, {}};
     for (int j : {leg.chain.upper, leg.chain.lower, leg.chain.end})
       for (double t : RotationKeysOf(sketch, j).times_s) leg.pinned_times_s.push_back(t);
     std::sort(leg.pinned_times_s.begin(), leg.pinned_times_s.end());
@@ -249,10 +254,10 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
     const std::vector<bool> pinned = PinnedFrames(clip, leg);
     const size_t first_contact = report.contacts.size();
     const JointContacts heel =
-        FindContacts(clip, tracks.ankle, tracks.hips, pinned, options, leg.side, "heel", report);
+        FindContacts(clip, tracks.ankle, tracks.hips, pinned, leg.heel_down, options, leg.side, "heel", report);
     JointContacts toe;
     if (leg.toe >= 0) {
-      toe = FindContacts(clip, tracks.toe, tracks.hips, pinned, options, leg.side, "toe", report);
+      toe = FindContacts(clip, tracks.toe, tracks.hips, pinned, leg.toe_down, options, leg.side, "toe", report);
       AnchorToesOnHeels(pinned, tracks, heel, toe);
     }
     std::vector<Correction> held(clip.num_frames);

@@ -1,6 +1,7 @@
 // Planted feet. Keyed legs interpolated between their keys, a root interpolated linearly and
 // captured texture added on top make a standing foot slide. The contacts are found on the
-// filled motion itself (foot_contacts.h: the heel's and the toe's heights and speeds), and each
+// filled motion itself (foot_contacts.h: the heel's and the toe's heights and speeds) or given
+// with the leg (a synthesised foot's, from the database takes it was blended from), and each
 // is held at an anchor on the ground (horizontally; the height stays as filled) by two-bone IK
 // of its leg (two_bone_ik.h), frame by frame:
 // - where the leg is keyed inside a contact, the anchor is the keyed foot (linear between two
@@ -32,6 +33,9 @@ struct LegForPlanting {
   // Times (seconds) at which one of the chain's joints has a rotation key: the correction must
   // be zero there.
   std::vector<double> pinned_times_s;
+  // Contacts known beforehand, one flag per frame of the planted clip (the matched database
+  // takes' own, for a synthesised leg); empty: found on the motion (foot_contacts.h).
+  std::vector<bool> heel_down, toe_down;
 };
 
 struct FootPlantOptions {
@@ -41,6 +45,10 @@ struct FootPlantOptions {
   // Toe contacts tighter still: a toe held far behind the fill's during push-off straightens
   // the leg, and its release turned the knee faster than capture does.
   double max_toe_correction_m = 0.06;
+  // Contacts given with a leg (a synthesised foot's, from the matched takes) are where a foot
+  // stands, but the takes' strides differ from the keyed root's travel: they are held up to
+  // this far.
+  double max_given_correction_m = 0.4;
   // Every frame's heel and toe are kept at or above their floor (their lowest heights at the
   // leg's keys): between keys, slerped legs and a linearly interpolated root sink them.
   bool keep_above_floor = true;
@@ -53,6 +61,7 @@ struct FootContact {
   double end_s = 0.0;
   int keys = 0;                   // keys of the leg inside the contact (they fix its anchor)
   double max_correction_m = 0.0;  // largest IK move of the foot joint inside the contact
+  std::string found_on = "fill";  // "fill": on the motion being planted; "takes": given with the leg
 };
 
 struct PlantedLeg {

@@ -9,6 +9,7 @@
 #include "processing/core/rotation.h"
 #include "processing/core/stopwatch.h"
 #include "processing/fill/fill_engine.h"
+#include "processing/fill/synthesized_contacts.h"
 #include "processing/motion/key_fidelity.h"
 #include "processing/motion/resample.h"
 #include "processing/retargeting/retarget_scene.h"
@@ -353,6 +354,7 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
     for (LegForPlanting& leg : legs)
       for (const PositionTarget& t : targets)
         if (t.joint == leg.chain.end || t.joint == leg.toe) leg.pinned_times_s.push_back(t.time_s);
+    GiveSynthesizedContacts(filled.report, filled.clip, db_rig.mapping, out, legs);
     result.feet = PlantFeet(sketch.skeleton, legs, options.feet, out);
   }
   out.MakeContinuous();

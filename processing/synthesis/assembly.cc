@@ -29,13 +29,12 @@ double FadeWeight(const SketchFragment& f, int margin, int t) {
   return Smoothstep(1.0 - double(outside) / (margin + 1));
 }
 
-// Adds weight * fade(t) * (candidate's channels stretched onto sketch frames [from, to)) to
-// acc (frames x channels.size()), and weight * fade(t) to weights.
-void AddStretched(const MotionDatabase& db, const DbFragment& g, const SketchFragment& f, int from, int to,
-                  int margin, const std::vector<int>& channels, double weight, Eigen::MatrixXd& acc,
+// Adds weight * fade(t) * (the candidate's rows of `s`, columns `channels`, stretched onto
+// sketch frames [from, to)) to acc (frames x channels.size()), and weight * fade(t) to weights.
+void AddStretched(const MotionDatabase& db, const Eigen::MatrixXf& s, const DbFragment& g, const SketchFragment& f,
+                  int from, int to, int margin, const std::vector<int>& channels, double weight, Eigen::MatrixXd& acc,
                   Eigen::VectorXd& weights) {
   const ClipRange& clip = db.clip(g.clip);
-  const Eigen::MatrixXf& s = db.signals();
   const int span = std::max(1, f.last - f.first);
   for (int t = from; t < to; ++t) {
     const double u = g.first + double(t - f.first) * (g.last - g.first) / span;
@@ -73,9 +72,10 @@ std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& ou
     std::vector<double> w;
     double total = 0.0;
     for (int c : set) total += w.emplace_back(std::exp(-cands[c].distance / mean_d));
+    const Eigen::MatrixXf& source = in.source ? *in.source : in.db->signals();
     for (size_t k = 0; k < set.size(); ++k)
-      AddStretched(*in.db, in.mdb->fragments()[cands[set[k]].fragment], frags[i], from, to, margin, in.channels,
-                   w[k] / total, acc, weights);
+      AddStretched(*in.db, source, in.mdb->fragments()[cands[set[k]].fragment], frags[i], from, to, margin,
+                   in.channels, w[k] / total, acc, weights);
     blended[i] = static_cast<int>(set.size());
   }
   for (int t = 0; t < rows; ++t)

@@ -21,6 +21,9 @@ struct AssemblyInputs {
   int blend = 1;                 // candidates averaged per fragment (the lead always among them)
   std::vector<int> channels;     // channels to write
   double crossfade = 0.0;        // overlap beyond each fragment, share of its length per side
+  // What is blended: columns `channels` of this (rows: the database's frames); null: the
+  // database's signals. The fill also blends the takes' foot contacts (ground_contacts.h).
+  const Eigen::MatrixXf* source = nullptr;
 };
 
 // Writes `channels` of every fragment's frames into `out` (frames x channels): the candidates'

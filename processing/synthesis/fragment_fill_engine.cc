@@ -10,6 +10,7 @@
 #include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill_stages.h"
 #include "processing/synthesis/fragment_matching.h"
+#include "processing/synthesis/ground_contacts.h"
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
 #include "processing/synthesis/matching_database.h"
@@ -76,6 +77,23 @@ void ReportGroup(const FragmentContext& ctx, const std::string& name, const Grou
         !Continues(ctx.mdb->fragments()[r.candidates[i - 1][r.leads[i - 1]].fragment], g))
       ++report.seams;
   }
+}
+
+// The contacts of the synthesised standing joints among `joints`: the matched takes' own,
+// blended with the same candidates, weights and cross-fades as the joints themselves.
+void VoteContacts(const FragmentContext& ctx, const DatabaseContacts& contacts, const std::vector<int>& joints,
+                  const GroupResult& r, int blend, FragmentFillReport& report) {
+  std::vector<int> columns;
+  for (size_t k = 0; k < contacts.joints.size(); ++k)
+    if (std::find(joints.begin(), joints.end(), contacts.joints[k]) != joints.end())
+      columns.push_back(static_cast<int>(k));
+  if (columns.empty()) return;
+  Eigen::MatrixXd votes = Eigen::MatrixXd::Zero(ctx.sketch->frames, contacts.joints.size());
+  const AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, columns,
+                                ctx.options->crossfade, &contacts.down};
+  AssembleFragments(assembly, votes);
+  for (SynthesizedContacts& c : VotedContacts(*ctx.db, contacts, columns, votes))
+    report.contacts.push_back(std::move(c));
 }
 
 std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const SketchSignals& s,
@@ -154,8 +172,9 @@ std::vector<std::uint8_t> HangingJoints(const MotionDatabase& db) {
 }
 
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
-                         CoverageYardstick& yardstick, const SketchSignals& s, const FragmentFillOptions& options,
-                         Eigen::MatrixXd& out, FragmentFillReport& report, StageTimer& timer) {
+                         CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
+                         const SketchSignals& s, const FragmentFillOptions& options, Eigen::MatrixXd& out,
+                         FragmentFillReport& report, StageTimer& timer) {
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -185,17 +204,23 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     if (!fixed[j]) joints.push_back(j);
   std::vector<int> synthesized = JointChannels(joints);
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
+  const std::vector<std::uint8_t> hanging = HangingJoints(db);
+  if (!contacts && std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; })) {
+    ASSIGN_OR_RETURN(DatabaseContacts found, FindDatabaseContacts(db, hanging));
+    contacts = std::make_unique<DatabaseContacts>(std::move(found));
+    timer.Mark("db_contacts");
+  }
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
       const GroupResult r =
           SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), synthesized, options.blend, out, timer);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
+      if (contacts) VoteContacts(ctx, *contacts, joints, r, options.blend, report);
     }
   } else {
     std::vector<std::uint8_t> available = fixed, keyed(db.num_joints(), 0);
     for (int j = 0; j < db.num_joints(); ++j) keyed[j] = s.keyed[3 * j];
     bool first = true;
-    const std::vector<std::uint8_t> hanging = HangingJoints(db);
     for (const JointGroup& group : PlanGroups(db.skeleton(), fixed)) {
       std::vector<DrivenChannel> driven =
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
@@ -207,6 +232,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       const int blend = hanging[group.joints.back()] ? std::min(options.blend, options.leg_blend) : options.blend;
       const GroupResult r = SynthesiseGroup(ctx, driven, targets, blend, out, timer);
       ReportGroup(ctx, group.name, r, blend, report);
+      if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
       std::string drivers;
       for (size_t i = 0; i < driven.size(); i += 3) {
         const bool features = driven[i].channel >= 3 * db.num_joints();
@@ -264,7 +290,7 @@ Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const Frag
   } else if (options.method == FillMethod::kNearest) {
     FillNearest(db_, s, options, out);
   } else {
-    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, s, options, out, report, timer));
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, s, options, out, report, timer));
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;

@@ -17,6 +17,7 @@
 namespace mocapfill {
 
 class MatchingDatabase;
+struct DatabaseContacts;
 
 // The coverage yardstick of a matching database (coverage.h: ReferenceDistance), the driven
 // channels and the options it was measured with; distance < 0 until measured.
@@ -56,6 +57,7 @@ class FragmentFillEngine {
   const MotionDatabase& db_;
   std::unique_ptr<MatchingDatabase> cache_;
   CoverageYardstick yardstick_;  // of cache_
+  std::unique_ptr<DatabaseContacts> contacts_;  // the takes' foot contacts, found on first need
 };
 
 }  // namespace mocapfill

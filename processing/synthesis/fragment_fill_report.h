@@ -52,6 +52,19 @@ struct CoverageReport {
   std::vector<PoorlyCoveredStretch> poor;
 };
 
+// Ground contacts of one synthesised joint (a foot or toe), voted from the matched takes'
+// own contacts (ground_contacts.h); the planter holds the joint over them.
+struct FrameRun {
+  int first_frame = 0;  // fill frames [first_frame, last_frame]
+  int last_frame = 0;
+};
+
+struct SynthesizedContacts {
+  std::string joint;
+  int joint_index = -1;  // in the database's skeleton
+  std::vector<FrameRun> runs;
+};
+
 struct JointFillInfo {
   std::string name;
   std::string kind;               // "keyed", "textured" or "synthesized"
@@ -84,6 +97,7 @@ struct FragmentFillReport {
   std::vector<StageTime> stages;
   std::vector<std::string> group_order;  // hierarchical: groups in synthesis order with drivers
   CoverageReport coverage;
+  std::vector<SynthesizedContacts> contacts;  // every synthesised joint that stands in the database
 };
 
 }  // namespace mocapfill

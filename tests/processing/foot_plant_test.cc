@@ -4,13 +4,18 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "formats/motion_io.h"
 #include "processing/core/kinematics.h"
+#include "processing/evaluation/metrics.h"
+#include "processing/evaluation/scenarios.h"
+#include "processing/evaluation/sketch_maker.h"
 #include "processing/motion/foot_contacts.h"
 #include "processing/motion/foot_plant.h"
 #include "processing/motion/key_fidelity.h"
 #include "processing/sketch_fill/sketch_fill.h"
+#include "processing/synthesis/ground_contacts.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
@@ -209,6 +214,109 @@ TEST(FootPlant, FeetStayAboveTheKeyedFloor) {
   std::printf("deepest below the keyed floor: %.2f mm planted, %.2f mm free\n", 1000 * planted_depth, 1000 * free_depth);
   EXPECT_LT(planted_depth, 0.001);
   EXPECT_GT(free_depth, 0.005);  // the free fill does sink: the test can fail
+}
+
+// The database's own foot contacts, which the fill votes for synthesised feet: on the default
+// database's walks each foot and toe stands for part of the stride and both feet are rarely
+// in the air at once (walking has no flight phase); the knees, eligible too, never stand.
+TEST(GroundContacts, DatabaseFeetStandInTurn) {
+  const MotionDatabase& db = testing::DefaultDb();
+  std::vector<std::uint8_t> eligible(db.num_joints(), 0);
+  for (const char* name : {"LowerLeg_L", "Foot_L", "Toes_L", "LowerLeg_R", "Foot_R", "Toes_R"})
+    eligible[*db.skeleton().Find(name)] = 1;
+  Result<DatabaseContacts> contacts = FindDatabaseContacts(db, eligible);
+  ASSERT_TRUE(contacts.ok()) << contacts.status().message();
+  std::vector<std::string> kept;
+  for (int j : contacts->joints) kept.push_back(db.skeleton().name(j));
+  EXPECT_EQ(kept, (std::vector<std::string>{"Foot_L", "Toes_L", "Foot_R", "Toes_R"}));
+  ASSERT_EQ(contacts->down.rows(), db.num_frames());
+  int walk_frames = 0, airborne = 0;
+  Eigen::Vector4d standing = Eigen::Vector4d::Zero();
+  for (int c = 0; c < db.num_clips(); ++c) {
+    if (db.clip(c).name.find("walk") == std::string::npos) continue;
+    for (int f = db.clip(c).first_frame; f < db.clip(c).first_frame + db.clip(c).num_frames; ++f) {
+      const Eigen::Vector4d d = contacts->down.row(f).transpose().cast<double>();
+      standing += d;
+      airborne += d[0] + d[1] == 0 && d[2] + d[3] == 0;
+      ++walk_frames;
+    }
+  }
+  ASSERT_GT(walk_frames, 500);
+  standing /= walk_frames;
+  std::printf("walks: foot/toe standing shares L %.2f %.2f, R %.2f %.2f; both feet up on %.1f %% of frames\n",
+              standing[0], standing[1], standing[2], standing[3], 100.0 * airborne / walk_frames);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_GT(standing[k], 0.2) << kept[k];
+    EXPECT_LT(standing[k], 0.8) << kept[k];
+  }
+  EXPECT_LT(airborne, 0.1 * walk_frames);
+}
+
+// Legs synthesised from the upper body (the upper-body scenario) are planted where the matched
+// takes stood: the fill votes the takes' contacts through its blend, and they agree with the
+// capture's own contacts more often than those found on the blended legs. During the capture's
+// contacts the planted feet then stand while the free ones slide.
+TEST(FootPlant, SynthesisedFeetStandWhereTheTakesStood) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<Scene> truth = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_001.bvh"));
+  ASSERT_TRUE(truth.ok());
+  Result<SketchScenario> scenario = FindSketchScenario("upper-body");
+  ASSERT_TRUE(scenario.ok());
+  const MotionDatabase& db = testing::BandaiDbWithout("proud");
+  Result<MotionClip> clip = MakeSketch(db.skeleton(), truth->clips[0], scenario->sketch);
+  ASSERT_TRUE(clip.ok()) << clip.status().message();
+  const Scene sketch{truth->skeleton, {*clip}, {}, {}, {}, {}};
+  std::map<bool, Result<SketchFillResult>> fills;
+  for (bool plant : {false, true}) {
+    SketchFillOptions options;
+    options.plant_feet = plant;
+    fills.emplace(plant, FillSketch(sketch, db, options));
+    ASSERT_TRUE(fills.at(plant).ok()) << fills.at(plant).status().message();
+  }
+  const SketchFillResult& planted = *fills.at(true);
+  const SketchFillResult& loose = *fills.at(false);
+  std::vector<std::string> voted;
+  for (const SynthesizedContacts& c : planted.report.contacts) voted.push_back(c.joint);
+  EXPECT_EQ(voted.size(), 4u);
+  int from_takes = 0;
+  for (const FootContact& c : planted.feet.contacts) from_takes += c.found_on == "takes";
+  EXPECT_GT(from_takes, 10);
+  EXPECT_LT(planted.key_error_max_deg, kPlantedKeysToleranceDeg);
+
+  // Heel contacts: voted (the report) and found on the free fill, against the capture's.
+  const MotionClip& capture = truth->clips[0];
+  const Skeleton& s = truth->skeleton;
+  ContactDetection capture_rule;
+  capture_rule.max_speed_m_per_s = 0.3;
+  int agree_voted = 0, agree_found = 0, total = 0;
+  for (const char* name : {"Foot_L", "Foot_R"}) {
+    const std::vector<Eigen::Vector3d> true_track = TrackOf(s, capture, *s.Find(name));
+    const std::vector<bool> truth_down = DetectContacts(true_track, TimesOf(capture), Lowest(true_track), capture_rule);
+    const std::vector<Eigen::Vector3d> free_track = TrackOf(s, loose.scene.clips[0], *s.Find(name));
+    const std::vector<bool> found = DetectContacts(free_track, TimesOf(capture), Lowest(free_track), {});
+    std::vector<bool> votes(capture.num_frames, false);
+    for (const SynthesizedContacts& c : planted.report.contacts)
+      if (c.joint == name)
+        for (const FrameRun& run : c.runs)
+          for (int f = run.first_frame; f <= run.last_frame && f < capture.num_frames; ++f) votes[f] = true;
+    for (int f = 0; f < capture.num_frames; ++f) {
+      agree_voted += votes[f] == truth_down[f];
+      agree_found += found[f] == truth_down[f];
+      ++total;
+    }
+  }
+  Result<FillMetrics> held = ScoreFill(s, capture, *clip, planted.scene.clips[0], db.root_joint());
+  Result<FillMetrics> slid = ScoreFill(s, capture, *clip, loose.scene.clips[0], db.root_joint());
+  ASSERT_TRUE(held.ok() && slid.ok());
+  std::printf("heel contacts agree with the capture's: voted %.1f %%, found on the free fill %.1f %%; "
+              "skating during true contacts %.1f cm/s planted, %.1f cm/s free\n",
+              100.0 * agree_voted / total, 100.0 * agree_found / total, held->foot_skate_cm_per_s,
+              slid->foot_skate_cm_per_s);
+  // Measured: voted 94.4 %, found 88.7 %; skating 0.3 cm/s planted, 26.4 free.
+  EXPECT_GT(agree_voted, 0.9 * total);
+  EXPECT_GT(agree_voted, agree_found + 0.03 * total);
+  EXPECT_LT(held->foot_skate_cm_per_s, 5.0);  // issue 15's limit
+  EXPECT_GT(slid->foot_skate_cm_per_s, 15.0);  // the free legs do slide: the test can fail
 }
 
 }  // namespace
