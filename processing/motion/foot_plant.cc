@@ -223,6 +223,23 @@ void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, st
   }
 }
 
+// The target brought back towards the hip where it asks the leg to reach further than the fill
+// had it, into the last `soft` share of its length: a knee turns ever faster as the leg
+// straightens (the angle's rate goes as 1 / sin), so a held foot a few millimetres beyond the
+// straight leg snapped the knee. The reach approaches full length exponentially instead
+// ("soft IK"); it is unchanged up to the fill's own reach, so a fading correction meets the
+// fill without a step.
+Vector3d SoftenedReach(const WorldPose& pose, const TwoBoneChain& chain, const Vector3d& target, double soft) {
+  const Vector3d hip = pose.positions[chain.upper];
+  const double length = (pose.positions[chain.lower] - hip).norm() +
+                        (pose.positions[chain.end] - pose.positions[chain.lower]).norm();
+  const double start = std::max((pose.positions[chain.end] - hip).norm(), (1.0 - soft) * length);
+  const double wanted = (target - hip).norm();
+  if (soft <= 0.0 || wanted <= start || start >= length) return target;
+  const double room = length - start;
+  return hip + (target - hip) * ((start + room * (1.0 - std::exp(-(wanted - start) / room))) / wanted);
+}
+
 }  // namespace
 
 std::vector<LegForPlanting> LegsToPlant(const RigMapping& mapping, const MotionClip& sketch) {
@@ -279,7 +296,7 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
       const Correction& c = corrections[f];
       if (!c.any) continue;
       ComputeWorldPose(skeleton, clip, f, pose);
-      const Vector3d target = pose.positions[leg.chain.end] + c.move;
+      const Vector3d target = SoftenedReach(pose, leg.chain, pose.positions[leg.chain.end] + c.move, options.soft_reach);
       pose.rotations[leg.chain.end] = c.turn * pose.rotations[leg.chain.end];
       const TwoBoneSolution s = SolveTwoBoneIk(skeleton, pose, leg.chain, target, hinge);
       clip.rotation(f, leg.chain.upper) = s.upper;

@@ -11,7 +11,8 @@
 //   the toe meets its own anchor; with the toe alone down (heel off), the ankle follows the
 //   held toe along the foot as the fill turns it;
 // - the correction fades out over a few frames beyond a contact, never past a key, so nothing
-//   pops where a contact starts or ends;
+//   pops where a contact starts or ends; a correction straightening the leg is softened near
+//   full length, so the knee does not snap;
 // - at every frame the foot is lifted back above the floor the keys stand on, if it sank.
 #pragma once
 
@@ -49,6 +50,9 @@ struct FootPlantOptions {
   // stands, but the takes' strides differ from the keyed root's travel: they are held up to
   // this far.
   double max_given_correction_m = 0.4;
+  // Corrections that stretch the leg into the last this share of its length approach full
+  // length smoothly rather than snapping the knee straight (0: plain two-bone IK).
+  double soft_reach = 0.05;
   // Every frame's heel and toe are kept at or above their floor (their lowest heights at the
   // leg's keys): between keys, slerped legs and a linearly interpolated root sink them.
   bool keep_above_floor = true;
