@@ -205,12 +205,30 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
   return out;
 }
 
+// The median height of a joint over the frames it stands on.
+double StandingHeight(const std::vector<Vector3d>& track, const std::vector<bool>& down) {
+  std::vector<double> heights;
+  for (size_t f = 0; f < track.size() && f < down.size(); ++f)
+    if (down[f]) heights.push_back(track[f].y());
+  if (heights.empty()) return -INFINITY;
+  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
+  return heights[heights.size() / 2];
+}
+
 // Between keys the slerped legs and the linearly interpolated root can sink a foot below the
 // ground the keys stand on: every frame's foot (after the holds) is lifted back onto the
-// floor of its heel and toe (their lowest heights at the keys); keys are on or above it.
-void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, std::vector<Correction>& corrections) {
-  const double heel_floor = FloorOf(tracks.ankle, pinned);
-  const double toe_floor = tracks.toe.empty() ? -INFINITY : FloorOf(tracks.toe, pinned);
+// floor of its heel and toe (their lowest heights at the keys); keys are on or above it. A
+// leg given its contacts (synthesised, without keys) stands on the median height of its
+// contacts instead: its lowest height let a blend of takes' feet sink up to 5 cm below the
+// ground it walked on.
+void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, const LegForPlanting& leg,
+                    std::vector<Correction>& corrections) {
+  double heel_floor = FloorOf(tracks.ankle, pinned);
+  double toe_floor = tracks.toe.empty() ? -INFINITY : FloorOf(tracks.toe, pinned);
+  if (leg.heel_down.size() == tracks.ankle.size())
+    heel_floor = std::max(heel_floor, StandingHeight(tracks.ankle, leg.heel_down));
+  if (!tracks.toe.empty() && leg.toe_down.size() == tracks.toe.size())
+    toe_floor = std::max(toe_floor, StandingHeight(tracks.toe, leg.toe_down));
   for (size_t f = 0; f < corrections.size(); ++f) {
     if (pinned[f]) continue;
     Correction& c = corrections[f];
@@ -288,7 +306,7 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
                          Smoothstep(double(heel_off) / (turn_span + 1)));
     }
     std::vector<Correction> corrections = FadeOut(held, pinned, fade);
-    if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, corrections);
+    if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, leg, corrections);
 
     const Vector3d hinge = HingeOf(skeleton, clip, leg.chain);
     PlantedLeg planted{leg.side, std::vector<double>(clip.num_frames, 0.0)};

@@ -13,7 +13,8 @@
 // - the correction fades out over a few frames beyond a contact, never past a key, so nothing
 //   pops where a contact starts or ends; a correction straightening the leg is softened near
 //   full length, so the knee does not snap;
-// - at every frame the foot is lifted back above the floor the keys stand on, if it sank.
+// - at every frame the foot is lifted back above the floor the keys stand on (a leg without
+//   keys but with given contacts: the median height of its contacts), if it sank.
 #pragma once
 
 #include <string>

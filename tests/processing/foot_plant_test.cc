@@ -256,7 +256,8 @@ TEST(GroundContacts, DatabaseFeetStandInTurn) {
 // Legs synthesised from the upper body (the upper-body scenario) are planted where the matched
 // takes stood: the fill votes the takes' contacts through its blend, and they agree with the
 // capture's own contacts more often than those found on the blended legs. During the capture's
-// contacts the planted feet then stand while the free ones slide.
+// contacts the planted feet then stand while the free ones slide, and they stand on the
+// ground rather than in it.
 TEST(FootPlant, SynthesisedFeetStandWhereTheTakesStood) {
   MOCAPFILL_REQUIRE_CORPUS();
   Result<Scene> truth = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_001.bvh"));
@@ -310,14 +311,18 @@ TEST(FootPlant, SynthesisedFeetStandWhereTheTakesStood) {
   Result<FillMetrics> slid = ScoreFill(s, capture, *clip, loose.scene.clips[0], db.root_joint());
   ASSERT_TRUE(held.ok() && slid.ok());
   std::printf("heel contacts agree with the capture's: voted %.1f %%, found on the free fill %.1f %%; "
-              "skating during true contacts %.1f cm/s planted, %.1f cm/s free\n",
+              "skating during true contacts %.1f cm/s planted, %.1f cm/s free; deepest below the capture's "
+              "floor %.2f cm planted, %.2f cm free\n",
               100.0 * agree_voted / total, 100.0 * agree_found / total, held->foot_skate_cm_per_s,
-              slid->foot_skate_cm_per_s);
-  // Measured: voted 94.4 %, found 88.7 %; skating 0.3 cm/s planted, 26.4 free.
+              slid->foot_skate_cm_per_s, held->penetration_max_cm, slid->penetration_max_cm);
+  // Measured: voted 94.4 %, found 88.7 %; skating 0.3 cm/s planted, 26.4 free; deepest 0.10 cm
+  // planted (the feet stand on the median height of their contacts), 2.68 free.
   EXPECT_GT(agree_voted, 0.9 * total);
   EXPECT_GT(agree_voted, agree_found + 0.03 * total);
   EXPECT_LT(held->foot_skate_cm_per_s, 5.0);  // issue 15's limit
   EXPECT_GT(slid->foot_skate_cm_per_s, 15.0);  // the free legs do slide: the test can fail
+  EXPECT_LT(held->penetration_max_cm, 1.0);  // issue 15's limit
+  EXPECT_GT(slid->penetration_max_cm, 2.0);  // the free legs do sink
 }
 
 // Largest turn of a knee from one frame to the next (degrees) and the knees' mean jerk
