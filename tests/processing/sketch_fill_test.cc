@@ -475,5 +475,58 @@ TEST(SketchFill, EveryRigKeepsKeysWithoutFlips) {
   }
 }
 
+// On the user's own rig: Geno (Mixamo-style names, 75 joints) walking with only the hips, torso,
+// head and arms keyed every 8 frames. The legs are synthesised on the database's rig, their
+// feet's contacts voted from the matched takes, and carried back onto Geno's legs and its own
+// frame times, where the planter holds them: the held feet stand, the keys stay exact.
+TEST(SketchFill, GenoSynthesisedFeetStandOnTheTakesContacts) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<Scene> bandai = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_001.bvh"));
+  Result<Scene> geno = ImportFile(testing::DataPath("geno/Geno.fbx"));
+  ASSERT_TRUE(bandai.ok() && geno.ok());
+  Result<Scene> on_geno = RetargetScene(*bandai, *geno);
+  ASSERT_TRUE(on_geno.ok()) << on_geno.status().message();
+  const Skeleton& s = on_geno->skeleton;
+  SketchSpec spec;
+  for (int j = 0; j < s.num_joints(); ++j) {
+    const std::string& name = s.name(j);
+    if (name.find("Leg") == std::string::npos && name.find("Foot") == std::string::npos &&
+        name.find("Toe") == std::string::npos)
+      spec.keep_joints.push_back(name);
+  }
+  Result<MotionClip> clip = MakeSketch(s, on_geno->clips[0], spec);
+  ASSERT_TRUE(clip.ok()) << clip.status().message();
+  Scene sketch = *on_geno;
+  sketch.clips = {*clip};
+  Result<SketchFillResult> filled = FillSketch(sketch, BandaiDbWithout("proud"), {});
+  ASSERT_TRUE(filled.ok()) << filled.status().message();
+  EXPECT_LT(filled->key_error_max_deg, kKeyToleranceDeg);
+  const MotionClip& out = filled->scene.clips[0];
+  double slide = 0.0;
+  int frames = 0, from_takes = 0;
+  WorldPose pose;
+  for (const FootContact& c : filled->feet.contacts) {
+    if (c.found_on != "takes") continue;
+    ++from_takes;
+    if (c.part != "heel") continue;
+    const int foot = *s.Find(c.side == "left" ? "LeftFoot" : "RightFoot");
+    Eigen::Vector3d before = Eigen::Vector3d::Zero();
+    for (int f = NearestFrame(out, c.start_s); f <= NearestFrame(out, c.end_s); ++f) {
+      ComputeWorldPose(s, out, f, pose);
+      if (f > NearestFrame(out, c.start_s)) {
+        const Eigen::Vector3d step = (pose.positions[foot] - before) / (out.time_s(f) - out.time_s(f - 1));
+        slide += std::hypot(step.x(), step.z());
+        ++frames;
+      }
+      before = pose.positions[foot];
+    }
+  }
+  std::printf("Geno, legs synthesised: %d contacts from the takes, heels sliding %.2f cm/s over %d frames\n",
+              from_takes, 100.0 * slide / std::max(1, frames), frames);
+  EXPECT_GT(from_takes, 10);
+  ASSERT_GT(frames, 50);
+  EXPECT_LT(slide / frames, 0.02);
+}
+
 }  // namespace
 }  // namespace mocapfill
