@@ -88,11 +88,10 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
                            const std::vector<bool>& pinned, const std::vector<bool>& given,
                            const FootPlantOptions& options, const std::string& side, const std::string& part,
                            FootPlantReport& report) {
-  const ContactDetection& detection = options.detection;
   std::vector<double> times(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
-  JointContacts out{given.size() == track.size() ? given
-                                                 : DetectContacts(track, times, FloorOf(track, pinned), detection, &hips),
+  const bool is_given = given.size() == track.size();
+  JointContacts out{is_given ? given : DetectContacts(track, times, FloorOf(track, pinned), options.detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
@@ -103,16 +102,16 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     }
     // A foot this far from where it would be held is not standing (a swing foot passing low
     // and slow near a key): holding it would drag the leg and pop where the hold ends.
-    const double limit = given.size() == track.size() ? options.max_given_correction_m
-                         : part == "toe"                ? options.max_toe_correction_m
-                                                        : options.max_correction_m;
+    const double limit = is_given        ? options.max_given_correction_m
+                         : part == "toe" ? options.max_toe_correction_m
+                                         : options.max_correction_m;
     if (farthest > limit) {
       std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
       ++report.contacts_skipped;
       continue;
     }
     std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
-    FootContact c{side, part, times[first], times[last], 0, 0.0, given.size() == track.size() ? "takes" : "fill"};
+    FootContact c{side, part, times[first], times[last], 0, 0.0, is_given ? "takes" : "fill"};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
     report.contacts.push_back(c);
   }
