@@ -57,6 +57,14 @@ Result<SketchFillResult> FillFile(const std::string& path, SketchFillOptions opt
   return FillSketch(sketch, DefaultDb(), options);
 }
 
+// The motion of a file retargeted onto Geno (the shared corpus's character: Mixamo-style names,
+// other proportions, an A-pose bind).
+Result<Scene> OnGeno(const std::string& motion_path) {
+  ASSIGN_OR_RETURN(const Scene motion, ImportFile(motion_path));
+  ASSIGN_OR_RETURN(const Scene geno, ImportFile(testing::DataPath("geno/Geno.fbx")));
+  return RetargetScene(motion, geno);
+}
+
 TEST(SketchFill, ShippedSketchOnTheDatabaseRig) {
   Result<SketchFillResult> r = FillFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
   ASSERT_TRUE(r.ok()) << r.status().message();
@@ -418,10 +426,7 @@ TEST(SketchFill, PositionKeysHoldTheFeet) {
 // On another rig (Geno: other proportions, an A-pose bind) the feet land as keyed too.
 TEST(SketchFill, PositionKeysHoldTheFeetOnGeno) {
   MOCAPFILL_REQUIRE_CORPUS();
-  Result<Scene> source = ImportFile(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
-  Result<Scene> geno = ImportFile(testing::DataPath("geno/Geno.fbx"));
-  ASSERT_TRUE(source.ok() && geno.ok());
-  Result<Scene> sketch = RetargetScene(*source, *geno);
+  Result<Scene> sketch = OnGeno(testing::FixturePath("sketches/walk_proud_002_legs8.glb"));
   ASSERT_TRUE(sketch.ok()) << sketch.status().message();
   ExpectPositionKeysHeld(*sketch, {"LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToeBase", "RightUpLeg", "RightLeg", "RightFoot", "RightToeBase"},
                          {"LeftFoot", "RightFoot"}, 0.01);
@@ -481,10 +486,7 @@ TEST(SketchFill, EveryRigKeepsKeysWithoutFlips) {
 // frame times, where the planter holds them: the held feet stand, the keys stay exact.
 TEST(SketchFill, GenoSynthesisedFeetStandOnTheTakesContacts) {
   MOCAPFILL_REQUIRE_CORPUS();
-  Result<Scene> bandai = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_001.bvh"));
-  Result<Scene> geno = ImportFile(testing::DataPath("geno/Geno.fbx"));
-  ASSERT_TRUE(bandai.ok() && geno.ok());
-  Result<Scene> on_geno = RetargetScene(*bandai, *geno);
+  Result<Scene> on_geno = OnGeno(testing::DataPath("bandai-namco-1/data/dataset-1_walk_proud_001.bvh"));
   ASSERT_TRUE(on_geno.ok()) << on_geno.status().message();
   const Skeleton& s = on_geno->skeleton;
   SketchSpec spec;
