@@ -7,8 +7,6 @@
 
 namespace mocapfill {
 
-namespace {
-
 // The candidates blended into one fragment: the nearest `blend`, with the lead replacing the
 // farthest when it is not among them.
 std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int blend) {
@@ -19,6 +17,19 @@ std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int ble
   }
   return set;
 }
+
+std::vector<double> DistanceWeights(const std::vector<Candidate>& cands, const std::vector<int>& set) {
+  double mean_d = 0.0;
+  for (int c : set) mean_d += cands[c].distance;
+  mean_d = std::max(1e-9, mean_d / set.size());
+  std::vector<double> w;
+  double total = 0.0;
+  for (int c : set) total += w.emplace_back(std::exp(-cands[c].distance / mean_d));
+  for (double& x : w) x /= total;
+  return w;
+}
+
+namespace {
 
 // Cross-fade weight of sketch frame t for fragment f extended by `margin` frames per side:
 // 1 inside the fragment, falling to 0 just beyond the margin along a smoothstep. A linear ramp
@@ -66,16 +77,11 @@ std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& ou
     const int to = margin > 0 ? std::min(rows, frags[i].last + margin + 1)
                               : (i + 1 == frags.size() ? frags[i].last + 1 : frags[i].last);
     const std::vector<int> set = BlendSet(cands, in.leads[i], in.blend);
-    double mean_d = 0.0;
-    for (int c : set) mean_d += cands[c].distance;
-    mean_d = std::max(1e-9, mean_d / set.size());
-    std::vector<double> w;
-    double total = 0.0;
-    for (int c : set) total += w.emplace_back(std::exp(-cands[c].distance / mean_d));
+    const std::vector<double> w = in.weights ? (*in.weights)[i] : DistanceWeights(cands, set);
     const Eigen::MatrixXf& source = in.source ? *in.source : in.db->signals();
     for (size_t k = 0; k < set.size(); ++k)
       AddStretched(*in.db, source, in.mdb->fragments()[cands[set[k]].fragment], frags[i], from, to, margin,
-                   in.channels, w[k] / total, acc, weights);
+                   in.channels, w[k], acc, weights);
     blended[i] = static_cast<int>(set.size());
   }
   for (int t = 0; t < rows; ++t)

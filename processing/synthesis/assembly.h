@@ -24,7 +24,16 @@ struct AssemblyInputs {
   // What is blended: columns `channels` of this (rows: the database's frames); null: the
   // database's signals. The fill also blends the takes' foot contacts (ground_contacts.h).
   const Eigen::MatrixXf* source = nullptr;
+  // Per fragment, the weight of each candidate of its BlendSet (summing to 1); null: DistanceWeights.
+  const std::vector<std::vector<double>>* weights = nullptr;
 };
+
+// The candidates blended into one fragment: the nearest `blend`, with the lead replacing the
+// farthest when it is not among them.
+std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int blend);
+
+// Weights exp(-d / mean d) over the set, normalised to sum 1.
+std::vector<double> DistanceWeights(const std::vector<Candidate>& cands, const std::vector<int>& set);
 
 // Writes `channels` of every fragment's frames into `out` (frames x channels): the candidates'
 // captured signals stretched linearly to the fragment's length, averaged with weights

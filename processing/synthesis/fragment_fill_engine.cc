@@ -13,6 +13,7 @@
 #include "processing/synthesis/ground_contacts.h"
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
+#include "processing/synthesis/local_regression.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"
 #include "processing/texturing/repin_keys.h"
@@ -43,7 +44,32 @@ struct FragmentContext {
 struct GroupResult {
   std::vector<std::vector<Candidate>> candidates;
   std::vector<int> leads;
+  std::vector<std::vector<double>> weights;  // per fragment, over its BlendSet
 };
+
+// Per fragment, the weight of each candidate of its blend: exp(-d / mean d), turned into the
+// local linear regression's equivalent kernel on the candidates' matching features when
+// local_ridge > 0.
+std::vector<std::vector<double>> BlendWeights(const FragmentContext& ctx, const Eigen::MatrixXd& match,
+                                              const std::vector<DrivenChannel>& driven, const GroupResult& r,
+                                              int blend) {
+  const double ridge = ctx.options->local_ridge;
+  Eigen::MatrixXf queries;
+  if (ridge > 0.0) queries = ScaledSketchFeatures(*ctx.mdb, match, ctx.fragments, driven, *ctx.options);
+  std::vector<std::vector<double>> weights(ctx.fragments.size());
+  for (size_t i = 0; i < ctx.fragments.size(); ++i) {
+    const std::vector<Candidate>& cands = r.candidates[i];
+    if (cands.empty()) continue;
+    const std::vector<int> set = BlendSet(cands, r.leads[i], blend);
+    weights[i] = DistanceWeights(cands, set);
+    if (ridge <= 0.0 || set.size() < 2) continue;
+    std::vector<int> rows;
+    for (int k : set) rows.push_back(cands[k].fragment);
+    weights[i] = LocalLinearWeights(ScaledDatabaseFeatures(*ctx.mdb, driven, rows), queries.row(i).transpose(),
+                                    weights[i], ridge);
+  }
+  return weights;
+}
 
 GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<DrivenChannel>& driven,
                             const std::vector<int>& targets, int blend, Eigen::MatrixXd& out, StageTimer& timer) {
@@ -54,8 +80,10 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<Driven
   JoinInputs join{ctx.db, ctx.mdb, &r.candidates, targets, ctx.sigma, ctx.options->transition_gamma};
   r.leads = JoinCandidates(ctx.options->join, join);
   timer.Mark("join");
+  r.weights = BlendWeights(ctx, match, driven, r, blend);
   AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, targets,
                           ctx.options->crossfade};
+  assembly.weights = &r.weights;
   AssembleFragments(assembly, out);
   if (ctx.options->crossfade <= 0.0) {
     const int window = static_cast<int>(std::lround(ctx.options->seam_window_s * ctx.db->rate_hz()));
@@ -90,7 +118,7 @@ void VoteContacts(const FragmentContext& ctx, const DatabaseContacts& contacts, 
   if (columns.empty()) return;
   Eigen::MatrixXd votes = Eigen::MatrixXd::Zero(ctx.sketch->frames, contacts.joints.size());
   const AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, columns,
-                                ctx.options->crossfade, &contacts.down};
+                                ctx.options->crossfade, &contacts.down, &r.weights};
   AssembleFragments(assembly, votes);
   for (SynthesizedContacts& c : VotedContacts(*ctx.db, contacts, columns, votes))
     report.contacts.push_back(std::move(c));

@@ -73,6 +73,9 @@ struct FragmentFillOptions {
   int candidates = 128;     // K best candidates kept per fragment
   int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)
   int leg_blend = 32;       // hierarchical: at most this many for chains hanging below the root (legs)
+  // > 0: the blend is a local linear regression over the candidates (local_regression.h) with
+  // this ridge, relative to the candidates' spread; 0: their plain weighted average.
+  double local_ridge = 0.3;
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching

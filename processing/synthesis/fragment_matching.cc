@@ -38,14 +38,20 @@ Scaling ScalingOf(const MatchingDatabase& mdb, const std::vector<DrivenChannel>&
   return scaling;
 }
 
-Eigen::MatrixXf ScaledDatabase(const MatchingDatabase& mdb, const Scaling& scaling) {
+// The scaled features of the listed database fragments, or of all of them (rows null).
+Eigen::MatrixXf ScaledDatabase(const MatchingDatabase& mdb, const Scaling& scaling,
+                               const std::vector<int>* rows = nullptr) {
   const int samples = mdb.samples(), channels = static_cast<int>(mdb.channel_sigma().size());
   const int nd = static_cast<int>(scaling.columns.size());
   const Eigen::MatrixXf& all = mdb.features();
-  Eigen::MatrixXf database(all.rows(), samples * nd);
-  for (int s = 0; s < samples; ++s)
-    for (int i = 0; i < nd; ++i)
-      database.col(s * nd + i) = all.col(s * channels + scaling.columns[i]) * scaling.factor[i];
+  const Eigen::Index n = rows ? static_cast<Eigen::Index>(rows->size()) : all.rows();
+  Eigen::MatrixXf database(n, samples * nd);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const Eigen::Index from = rows ? (*rows)[r] : r;
+    for (int s = 0; s < samples; ++s)
+      for (int i = 0; i < nd; ++i)
+        database(r, s * nd + i) = all(from, s * channels + scaling.columns[i]) * scaling.factor[i];
+  }
   return database;
 }
 
@@ -73,6 +79,21 @@ ScaledProblem Scale(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_m
   const Scaling scaling = ScalingOf(mdb, driven);
   return {ScaledQueries(mdb, sketch_match, fragments, scaling, options), ScaledDatabase(mdb, scaling)};
 }
+
+}  // namespace
+
+Eigen::MatrixXf ScaledSketchFeatures(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                                     const std::vector<SketchFragment>& fragments,
+                                     const std::vector<DrivenChannel>& driven, const FragmentFillOptions& options) {
+  return ScaledQueries(mdb, sketch_match, fragments, ScalingOf(mdb, driven), options);
+}
+
+Eigen::MatrixXf ScaledDatabaseFeatures(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven,
+                                       const std::vector<int>& fragments) {
+  return ScaledDatabase(mdb, ScalingOf(mdb, driven), &fragments);
+}
+
+namespace {
 
 bool Admissible(const SketchFragment& query, const DbFragment& db, const FragmentFillOptions& options) {
   if (query.rising != db.rising) return false;

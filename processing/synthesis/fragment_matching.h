@@ -51,6 +51,15 @@ std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, 
                                                    const std::vector<DrivenChannel>& driven,
                                                    const FragmentFillOptions& options);
 
+// Matching features scaled so that a squared Euclidean distance between two rows is the
+// distance MatchFragments measures: one row per sketch fragment, or per listed database
+// fragment (indices into MatchingDatabase::fragments(), rows in that order).
+Eigen::MatrixXf ScaledSketchFeatures(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                                     const std::vector<SketchFragment>& fragments,
+                                     const std::vector<DrivenChannel>& driven, const FragmentFillOptions& options);
+Eigen::MatrixXf ScaledDatabaseFeatures(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven,
+                                       const std::vector<int>& fragments);
+
 // Per sketch fragment: its distance (as MatchFragments measures it) to the database mean
 // pose standing still, the all-zero matching signal: how much there is to explain.
 std::vector<float> FragmentEnergies(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,

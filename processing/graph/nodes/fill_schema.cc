@@ -45,6 +45,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
       WithWords(BoolOption("repin_keys", d.repin_keys, "restore the exact keys after texturing"), "on", "off"),
       IntOption("candidates", d.candidates, 1, 1024, "best database fragments kept per sketch fragment"),
       IntOption("blend", d.blend, 1, 1024, "candidates averaged per fragment (1 = the joined one alone; at most candidates)"),
+      NumberOption("local_ridge", d.local_ridge, 0.0, false, 100.0, "",
+                   "blend each fragment's candidates by local linear regression on their matching features, with "
+                   "this ridge relative to their spread (0 = plain weighted average)"),
       StringOption("match", "lowpass", {"lowpass", "band"},
                    "matching signal: lowpass (sketch-filtered curves) or band (band-pass only)"),
       WithFlag(NumberOption("context_fraction", d.context_fraction, 0.0, false, 2.0, "",
@@ -144,6 +147,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.fragment_band_hz = o.Number("fragment_band_hz");
   options.root_feature_weight = o.Number("root_weight");
   options.crossfade = o.Number("crossfade");
+  options.local_ridge = o.Number("local_ridge");
   options.root_drives = o.Bool("root_drives");
   options.synthesized_driver_weight = o.Number("synthesized_driver_weight");
   options.threads = o.Int("threads");
