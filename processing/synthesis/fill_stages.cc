@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "processing/core/rotation.h"
+#include "processing/texturing/repin_keys.h"
 
 namespace mocapfill {
 
@@ -24,6 +25,25 @@ std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSign
   return fixed;
 }
 
+namespace {
+
+// The textured root travel (integrated from textured velocities, so it drifts between keys)
+// moved onto the sketch's translation keys by a displacement map (repin_keys.h); the height
+// (up is +Y, as in the root features) stays the sketch's.
+void PinTravelOntoKeys(const MotionClip& sketch, int root, MotionClip& clip) {
+  const std::vector<int>& keys = sketch.keys[root].translation_frames;
+  Eigen::MatrixXd keyed(clip.num_frames, 3), path(clip.num_frames, 3);
+  for (int f = 0; f < clip.num_frames; ++f) {
+    keyed.row(f) = sketch.translation(f, root).transpose();
+    path.row(f) = clip.translation(f, root).transpose();
+  }
+  RepinKeys(keyed, {keys, keys, keys}, {0, 2}, path);
+  for (int f = 0; f < clip.num_frames; ++f)
+    clip.translation(f, root) = Eigen::Vector3d(path(f, 0), keyed(f, 1), path(f, 2));
+}
+
+}  // namespace
+
 bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s) {
   return db.root_joint() >= 0 && s.num_channels() > 3 * db.num_joints() && s.keyed[3 * db.num_joints()];
 }
@@ -38,6 +58,12 @@ Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s,
   for (int j = 0; j < db.num_joints(); ++j) {
     const bool copy = (fixed[j] && !(textured && s.keyed[3 * j]));
     const bool root_moves = j == db.root_joint() && RootFeaturesKeyed(db, s);
+    if (root_moves && textured) {
+      PinTravelOntoKeys(sketch, j, clip);
+      if (copy)
+        for (int f = 0; f < clip.num_frames; ++f) clip.rotation(f, j) = sketch.rotation(f, j);
+      continue;
+    }
     for (int f = 0; f < clip.num_frames; ++f) {
       if (copy) clip.rotation(f, j) = sketch.rotation(f, j);
       if (copy || root_moves) clip.translation(f, j) = sketch.translation(f, j);

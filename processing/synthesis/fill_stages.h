@@ -52,8 +52,9 @@ std::vector<std::uint8_t> FixedJoints(const MotionDatabase& db, const SketchSign
 bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s);
 
 // Signals (frames x database channels) -> clip; fixed joints that were not textured keep the
-// sketch's exact rotations, the root its sketch trajectory when the sketch keys it. Every
-// frame of the result is keyed.
+// sketch's exact rotations. A root the sketch keys keeps the sketch's trajectory, or when
+// textured its travel as the signals integrate to it, pinned onto the sketch's translation keys,
+// with the sketch's height. Every frame of the result is keyed.
 Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
                                const MotionClip& sketch, bool textured);
 

@@ -276,9 +276,26 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     std::vector<int> keyed_channels;
     for (int c = 0; c < 3 * db.num_joints(); ++c)
       if (s.keyed[c] && !fixed.empty()) keyed_channels.push_back(c);
+    // A keyed root's travel is textured like a keyed joint (its keys' low band plus the lead's
+    // detail): the sketch's path, linear between keys, kinks at every key and jolts the whole
+    // body there. The planar velocities are textured here and the path they integrate to is
+    // pinned onto the keys (ComposeFill). The height keeps the sketch's path: a bob the legs'
+    // planted feet do not follow made the knees snap into the keys. The yaw rate is left as
+    // keyed: the heading it integrates to must meet the root's rotation keys.
+    std::vector<int> root_channels;
+    if (RootFeaturesKeyed(db, s))
+      for (int f : {kRootForward, kRootLateral}) root_channels.push_back(db.RootFeatureChannel(f));
     Eigen::MatrixXd source = out;
     const GroupResult r = SynthesiseGroup(ctx, AllKeyedDrivers(db, s, options), keyed_channels, 1, source, timer);
-    TextureChannels(s.values, source, keyed_channels, TextureBandCount(s.key_spacing, rate), rate, out,
+    if (!root_channels.empty()) {
+      // From the same takes as the joints' texture, so that hips and legs move together.
+      AssemblyInputs lead{&db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, 1, root_channels, options.crossfade};
+      lead.weights = &r.weights;
+      AssembleFragments(lead, source);
+    }
+    std::vector<int> textured = keyed_channels;
+    textured.insert(textured.end(), root_channels.begin(), root_channels.end());
+    TextureChannels(s.values, source, textured, TextureBandCount(s.key_spacing, rate), rate, out,
                     options.texture_finest_band);
     if (options.repin_keys) RepinKeys(s.values, s.key_frames, keyed_channels, out);
     timer.Mark("texture");
