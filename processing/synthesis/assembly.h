@@ -36,8 +36,8 @@ std::vector<int> BlendSet(const std::vector<Candidate>& cands, int lead, int ble
 std::vector<double> DistanceWeights(const std::vector<Candidate>& cands, const std::vector<int>& set);
 
 // Writes `channels` of every fragment's frames into `out` (frames x channels): the candidates'
-// captured signals stretched linearly to the fragment's length, averaged with weights
-// exp(-d / mean d) over the lead and the nearest others. Without cross-fade a fragment owns
+// captured signals stretched linearly to the fragment's length, averaged over the lead and the
+// nearest others with `weights` (by default exp(-d / mean d), DistanceWeights). Without cross-fade a fragment owns
 // [first, last) (the last one its end frame too); with it, each fragment's candidates extend
 // `crossfade` of its length beyond both ends (the takes continue there) and overlapping
 // fragments are mixed with smoothstep fade weights, so there is no seam to smooth. Returns how

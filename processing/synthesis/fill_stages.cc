@@ -58,16 +58,12 @@ Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s,
   for (int j = 0; j < db.num_joints(); ++j) {
     const bool copy = (fixed[j] && !(textured && s.keyed[3 * j]));
     const bool root_moves = j == db.root_joint() && RootFeaturesKeyed(db, s);
-    if (root_moves && textured) {
-      PinTravelOntoKeys(sketch, j, clip);
-      if (copy)
-        for (int f = 0; f < clip.num_frames; ++f) clip.rotation(f, j) = sketch.rotation(f, j);
-      continue;
-    }
+    const bool pin_travel = root_moves && textured;
     for (int f = 0; f < clip.num_frames; ++f) {
       if (copy) clip.rotation(f, j) = sketch.rotation(f, j);
-      if (copy || root_moves) clip.translation(f, j) = sketch.translation(f, j);
+      if ((copy || root_moves) && !pin_travel) clip.translation(f, j) = sketch.translation(f, j);
     }
+    if (pin_travel) PinTravelOntoKeys(sketch, j, clip);
   }
   clip.MakeContinuous();
   clip.KeyAllFrames();

@@ -61,7 +61,7 @@ std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const Sketc
 std::vector<std::vector<double>> BlendWeights(const FragmentContext& ctx, const Eigen::MatrixXd& match,
                                               const std::vector<DrivenChannel>& features, const GroupResult& r,
                                               int blend) {
-  const double ridge = ctx.options->local_ridge;
+  const double ridge = blend > 1 ? ctx.options->local_ridge : 0.0;  // one candidate: nothing to regress
   Eigen::MatrixXf queries;
   if (ridge > 0.0) queries = ScaledSketchFeatures(*ctx.mdb, match, ctx.fragments, features, *ctx.options);
   std::vector<std::vector<double>> weights(ctx.fragments.size());
@@ -241,10 +241,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     contacts = std::make_unique<DatabaseContacts>(std::move(found));
     timer.Mark("db_contacts");
   }
+  const std::vector<DrivenChannel> all_keyed = AllKeyedDrivers(db, s, options);
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
-      const std::vector<DrivenChannel> all = AllKeyedDrivers(db, s, options);
-      const GroupResult r = SynthesiseGroup(ctx, all, all, synthesized, options.blend, out, timer);
+      const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, synthesized, options.blend, out, timer);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
       if (contacts) VoteContacts(ctx, *contacts, joints, r, options.blend, report);
     }
@@ -256,17 +256,16 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       std::vector<DrivenChannel> driven =
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
                         options.synthesized_driver_weight, options.root_feature_weight, options.root_drives);
-      if (driven.empty()) driven = AllKeyedDrivers(db, s, options);
+      if (driven.empty()) driven = all_keyed;
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
       first = false;
       const int blend = hanging[group.joints.back()] ? std::min(options.blend, options.leg_blend) : options.blend;
       // A group's candidates are matched on its few most correlated drivers, but what varies
-      // among them is regressed on every keyed channel: 128 candidates support the wider fit
-      // (tuning half, every scenario, 0.6 % lower MPJPE), the 32 of a leg chain do not (the
-      // upper-body sketch's synthesised legs: 9.954 against 9.888 cm).
-      const std::vector<DrivenChannel> regressors = hanging[group.joints.back()] ? driven : AllKeyedDrivers(db, s, options);
-      const GroupResult r = SynthesiseGroup(ctx, driven, regressors, targets, blend, out, timer);
+      // among them is regressed on every keyed channel: 128 candidates support the wider fit,
+      // the 32 of a leg chain do not (docs/fill.md, step 6).
+      const GroupResult r =
+          SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets, blend, out, timer);
       ReportGroup(ctx, group.name, r, blend, report);
       if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
       std::string drivers;
@@ -294,8 +293,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     if (RootFeaturesKeyed(db, s))
       for (int f : {kRootForward, kRootLateral}) root_channels.push_back(db.RootFeatureChannel(f));
     Eigen::MatrixXd source = out;
-    const std::vector<DrivenChannel> all = AllKeyedDrivers(db, s, options);
-    const GroupResult r = SynthesiseGroup(ctx, all, all, keyed_channels, 1, source, timer);
+    const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, keyed_channels, 1, source, timer);
     if (!root_channels.empty()) {
       // From the same takes as the joints' texture, so that hips and legs move together.
       AssemblyInputs lead{&db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, 1, root_channels, options.crossfade};
