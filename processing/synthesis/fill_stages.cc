@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/core/monotone_cubic.h"
 #include "processing/core/rotation.h"
 #include "processing/texturing/repin_keys.h"
 
@@ -29,7 +30,7 @@ namespace {
 
 // The textured root travel (integrated from textured velocities, so it drifts between keys)
 // moved onto the sketch's translation keys by a displacement map (repin_keys.h); the height
-// (up is +Y, as in the root features) stays the sketch's.
+// (up is +Y, as in the root features) is a smooth curve through the sketch's height keys.
 void PinTravelOntoKeys(const MotionClip& sketch, int root, MotionClip& clip) {
   const std::vector<int>& keys = sketch.keys[root].translation_frames;
   Eigen::MatrixXd keyed(clip.num_frames, 3), path(clip.num_frames, 3);
@@ -38,8 +39,15 @@ void PinTravelOntoKeys(const MotionClip& sketch, int root, MotionClip& clip) {
     path.row(f) = clip.translation(f, root).transpose();
   }
   RepinKeys(keyed, {keys, keys, keys}, {0, 2}, path);
+  // The height through the same keys without the sketch's kinks, never above or below them:
+  // a hip rising past its keys would ask the planted legs for more reach than the keys do.
+  std::vector<double> key_heights;
+  for (int f : keys) key_heights.push_back(keyed(f, 1));
+  std::vector<double> height = MonotoneCubicThroughKeys(keys, key_heights, clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f)
-    clip.translation(f, root) = Eigen::Vector3d(path(f, 0), keyed(f, 1), path(f, 2));
+    if (keys.empty() || f < keys.front() || f > keys.back()) height[f] = keyed(f, 1);
+  for (int f = 0; f < clip.num_frames; ++f)
+    clip.translation(f, root) = Eigen::Vector3d(path(f, 0), height[f], path(f, 2));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "processing/synthesis/ground_contacts.h"
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
+#include "processing/synthesis/limb_reach.h"
 #include "processing/synthesis/local_regression.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"
@@ -115,6 +116,27 @@ void ReportGroup(const FragmentContext& ctx, const std::string& name, const Grou
         !Continues(ctx.mdb->fragments()[r.candidates[i - 1][r.leads[i - 1]].fragment], g))
       ++report.seams;
   }
+}
+
+// The synthesised limbs among `joints` (legs aside: planting holds them) reach where the
+// blended takes have their tips (limb_reach.h).
+void ReachLikeTheTakes(const FragmentContext& ctx, const std::vector<int>& joints,
+                       const std::vector<std::uint8_t>& hanging, const GroupResult& r, int blend,
+                       Eigen::MatrixXd& out) {
+  if (ctx.options->limb_reach <= 0.0) return;
+  std::vector<Limb> limbs;
+  for (const Limb& limb : ReachingLimbs(ctx.db->skeleton(), joints))
+    if (!hanging[limb.end] && limb.upper != ctx.db->root_joint() && limb.lower != ctx.db->root_joint())
+      limbs.push_back(limb);
+  if (limbs.empty()) return;
+  const Eigen::MatrixXf table = LimbReachTable(*ctx.db, limbs);
+  std::vector<int> columns(table.cols());
+  for (int c = 0; c < table.cols(); ++c) columns[c] = c;
+  Eigen::MatrixXd reach = Eigen::MatrixXd::Zero(out.rows(), table.cols());
+  const AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, columns,
+                                ctx.options->crossfade, &table, &r.weights};
+  AssembleFragments(assembly, reach);
+  ReachLimbs(*ctx.db, limbs, reach, ctx.options->limb_reach, out);
 }
 
 // The contacts of the synthesised standing joints among `joints`: the matched takes' own,
@@ -245,6 +267,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
       const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, synthesized, options.blend, out, timer);
+      ReachLikeTheTakes(ctx, joints, hanging, r, options.blend, out);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
       if (contacts) VoteContacts(ctx, *contacts, joints, r, options.blend, report);
     }
@@ -266,6 +289,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       // the 32 of a leg chain do not (docs/fill.md, step 6).
       const GroupResult r =
           SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets, blend, out, timer);
+      ReachLikeTheTakes(ctx, group.joints, hanging, r, blend, out);
       ReportGroup(ctx, group.name, r, blend, report);
       if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
       std::string drivers;

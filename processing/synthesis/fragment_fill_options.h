@@ -76,6 +76,9 @@ struct FragmentFillOptions {
   // > 0: the blend is a local linear regression over the candidates (local_regression.h) with
   // this ridge, relative to the candidates' spread; 0: their plain weighted average.
   double local_ridge = 0.3;
+  // Share of the way each synthesised arm moves from where the blended rotations put its hand
+  // to where the blended takes have it (limb_reach.h); 0: as the rotations put it.
+  double limb_reach = 0.5;
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching

@@ -6,6 +6,7 @@
 
 #include "formats/motion_io.h"
 #include "processing/core/kinematics.h"
+#include "processing/core/monotone_cubic.h"
 #include "processing/core/rotation.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/scenarios.h"
@@ -177,7 +178,7 @@ double RootPathJerk(const MotionClip& clip, int root) {
 
 // The keyed root's travel is textured like the keyed joints: the path passes through every
 // translation key exactly, without the sketch's kink at each key (the shipped sketch is linear
-// between keys); its height, and the whole path of an untextured fill, stay the sketch's.
+// between keys); the whole path of an untextured fill stays the sketch's.
 TEST(Fill, KeyedRootTravelMeetsItsKeysWithoutKinks) {
   const MotionClip sketch = Sketch();
   const int root = DefaultDb().root_joint();
@@ -191,15 +192,75 @@ TEST(Fill, KeyedRootTravelMeetsItsKeysWithoutKinks) {
   EXPECT_LT(worst, 1e-9);
   const double sketched = RootPathJerk(sketch, root), filled = RootPathJerk(r->clip, root);
   std::printf("root path jerk: sketch %.2f m/s^3, fill %.2f m/s^3\n", sketched, filled);
-  EXPECT_LT(filled, 0.6 * sketched);  // measured 36.0 against 83.9 (the capture: 38.9)
-  for (int f = 0; f < sketch.num_frames; ++f)
-    ASSERT_EQ(r->clip.translation(f, root).y(), sketch.translation(f, root).y()) << f;
+  EXPECT_LT(filled, 0.6 * sketched);  // measured 27.1 against 83.9 (the capture: 38.9)
+  // The height: a smooth curve through its keys that stays between each pair of neighbouring
+  // keys (a hip above its keys would ask the planted legs for more reach), kinking less than
+  // the sketch's straight segments.
+  double height_jerk = 0.0, sketched_height_jerk = 0.0;
+  for (size_t k = 0; k + 1 < keys.size(); ++k) {
+    const double a = sketch.translation(keys[k], root).y(), b = sketch.translation(keys[k + 1], root).y();
+    for (int f = keys[k]; f <= keys[k + 1]; ++f) {
+      const double y = r->clip.translation(f, root).y();
+      ASSERT_GE(y, std::min(a, b) - 1e-12) << f;
+      ASSERT_LE(y, std::max(a, b) + 1e-12) << f;
+    }
+  }
+  for (int f = keys.front() + 2; f + 1 <= keys.back(); ++f) {
+    auto jerk = [&](const MotionClip& c) {
+      return std::abs(c.translation(f + 1, root).y() - 3.0 * c.translation(f, root).y() +
+                      3.0 * c.translation(f - 1, root).y() - c.translation(f - 2, root).y());
+    };
+    height_jerk += jerk(r->clip);
+    sketched_height_jerk += jerk(sketch);
+  }
+  std::printf("hips height jerk: sketch %.5f, fill %.5f m/frame^3 summed\n", sketched_height_jerk, height_jerk);
+  EXPECT_LT(height_jerk, 0.5 * sketched_height_jerk);
   FillOptions plain;
   plain.texture = false;
   Result<FillResult> untextured = engine.Fill(sketch, plain);
   ASSERT_TRUE(untextured.ok());
   for (int f = 0; f < sketch.num_frames; ++f)
     ASSERT_EQ(untextured->clip.translation(f, root), sketch.translation(f, root)) << f;
+}
+
+// The hips' height between keys: through keys at uneven spacing on the captured height of the
+// default database's first take, the curve meets every key, never leaves the range of the two
+// keys around it (no overshoot), rises or falls with them, and does not kink at the keys.
+TEST(Fill, HeightCurveThroughUnevenKeysNeitherOvershootsNorKinks) {
+  const MotionDatabase& db = DefaultDb();
+  const int column = db.RootFeatureChannel(kRootHeight);
+  std::vector<int> keys;
+  std::vector<double> heights;
+  for (int f = 3, step = 4; f < 200; f += step, step = step % 9 + 3) {
+    keys.push_back(f);
+    heights.push_back(db.signals()(f, column));
+  }
+  const std::vector<double> curve = MonotoneCubicThroughKeys(keys, heights, 210);
+  ASSERT_EQ(curve.size(), 210u);
+  EXPECT_EQ(curve[0], heights.front());
+  EXPECT_EQ(curve[209], heights.back());
+  std::vector<double> linear(210, heights.front());
+  for (size_t k = 0; k + 1 < keys.size(); ++k) {
+    EXPECT_NEAR(curve[keys[k]], heights[k], 1e-15);
+    const double lo = std::min(heights[k], heights[k + 1]), hi = std::max(heights[k], heights[k + 1]);
+    for (int f = keys[k]; f <= keys[k + 1]; ++f) {
+      ASSERT_GE(curve[f], lo - 1e-15) << f;
+      ASSERT_LE(curve[f], hi + 1e-15) << f;
+      if (f < keys[k + 1]) {
+        ASSERT_GE((curve[f + 1] - curve[f]) * (heights[k + 1] - heights[k]), -1e-18) << f;  // monotone
+      }
+      linear[f] = heights[k] + (heights[k + 1] - heights[k]) * (f - keys[k]) / (keys[k + 1] - keys[k]);
+    }
+  }
+  for (int f = keys.back(); f < 210; ++f) linear[f] = heights.back();
+  // Jerk (third differences) summed: the straight segments kink at every key.
+  auto jerk = [](const std::vector<double>& y) {
+    double sum = 0.0;
+    for (size_t f = 3; f < y.size(); ++f) sum += std::abs(y[f] - 3.0 * y[f - 1] + 3.0 * y[f - 2] - y[f - 3]);
+    return sum;
+  };
+  std::printf("height jerk summed: %.4f m/frame^3 (straight segments: %.4f)\n", jerk(curve), jerk(linear));
+  EXPECT_LT(jerk(curve), 0.65 * jerk(linear));  // measured 0.566 against 0.992
 }
 
 TEST(Fill, CostMatrixJoinsWithNoMoreSeamsThanBestFragment) {
@@ -239,9 +300,11 @@ TEST(Fill, HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle) {
       const int root = DefaultDb().root_joint();
       const double path = RootPathJerk(r->clip, root) / RootPathJerk(truth->clips[0], root);
       std::printf("jitter ratio %.3f, root path's jerk / capture's %.3f\n", m->jitter_ratio, path);
-      EXPECT_GT(m->jitter_ratio, 0.8);  // measured 1.052
+      EXPECT_GT(m->jitter_ratio, 0.8);  // measured 0.945
       EXPECT_LT(m->jitter_ratio, 1.3);
-      EXPECT_GT(path, 0.8);  // measured 0.924 (the sketch's own path: 2.155)
+      // Measured 0.696 (the sketch's own path: 2.155): smoother than the capture, whose hips bob
+      // between the keys where the fill's height follows a smooth curve through them.
+      EXPECT_GT(path, 0.5);
       EXPECT_LT(path, 1.3);
     }
   }
@@ -291,7 +354,7 @@ TEST(Fill, SynthesisedJointsAreAboutAsSmoothAsTheCapture) {
   }
   std::printf("unkeyed jerk / capture's: %.3f with the finest band, %.3f without; MPJPE %.3f / %.3f cm\n", ratio[0],
               ratio[1], mpjpe[0], mpjpe[1]);
-  // Measured 1.151 with the band, 1.093 without; MPJPE 9.462 / 9.449 cm.
+  // Measured 1.125 with the band, 1.068 without; MPJPE 8.845 / 8.829 cm.
   EXPECT_LT(ratio[1], 0.98 * ratio[0]);
   EXPECT_LT(ratio[1], 1.3);  // issue 15's limit for the jitter ratio
   EXPECT_LT(mpjpe[1], mpjpe[0] + 0.05);

@@ -48,6 +48,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
       NumberOption("local_ridge", d.local_ridge, 0.0, false, 100.0, "",
                    "blend each fragment's candidates by local linear regression on their matching features, with "
                    "this ridge relative to their spread (0 = plain weighted average)"),
+      NumberOption("limb_reach", d.limb_reach, 0.0, false, 1.0, "",
+                   "move each synthesised arm this share of the way from where the blended rotations put its hand "
+                   "to where the blended takes have it (0 = as the rotations put it)"),
       StringOption("match", "lowpass", {"lowpass", "band"},
                    "matching signal: lowpass (sketch-filtered curves) or band (band-pass only)"),
       WithFlag(NumberOption("context_fraction", d.context_fraction, 0.0, false, 2.0, "",
@@ -148,6 +151,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.root_feature_weight = o.Number("root_weight");
   options.crossfade = o.Number("crossfade");
   options.local_ridge = o.Number("local_ridge");
+  options.limb_reach = o.Number("limb_reach");
   options.root_drives = o.Bool("root_drives");
   options.synthesized_driver_weight = o.Number("synthesized_driver_weight");
   options.threads = o.Int("threads");

@@ -1,0 +1,121 @@
+#include "processing/synthesis/limb_reach.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "processing/core/rotation.h"
+
+namespace mocapfill {
+
+namespace {
+
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+// A joint's offset from its parent as forward kinematics applies it.
+Vector3d BoneOffset(const Skeleton& skeleton, int j) {
+  return skeleton.joint(skeleton.parent(j)).rest_scale.cwiseProduct(skeleton.joint(j).rest_translation);
+}
+
+Quaterniond LocalRotation(const MotionDatabase& db, int j, const Vector3d& channels) {
+  return db.joint_means()[j] * ExpMap(channels);
+}
+
+struct LimbGeometry {
+  Vector3d upper_bone, lower_bone;  // offsets of the lower joint and of the tip
+  Vector3d hinge;                   // elbow axis in the upper joint's frame
+};
+
+// The elbow's axis: the bend plane's normal where the database bends the limb most (a nearly
+// straight limb shows no plane of its own).
+LimbGeometry GeometryOf(const MotionDatabase& db, const Limb& limb) {
+  const Skeleton& s = db.skeleton();
+  LimbGeometry g{BoneOffset(s, limb.lower), BoneOffset(s, limb.end), Vector3d::UnitX()};
+  double best = 0.0;
+  const Eigen::MatrixXf& signals = db.signals();
+  for (int f = 0; f < signals.rows(); ++f) {
+    const Quaterniond q2 = LocalRotation(db, limb.lower, signals.row(f).segment<3>(3 * limb.lower).cast<double>());
+    const Vector3d n = g.upper_bone.cross(q2 * g.lower_bone);
+    if (n.norm() > best) {
+      best = n.norm();
+      g.hinge = n.normalized();
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+std::vector<Limb> ReachingLimbs(const Skeleton& skeleton, const std::vector<int>& group) {
+  // Each joint of the limb in the group, and the upper two on a chain (one child each).
+  auto in_chain = [&](int j) {
+    return j != kNoParent && std::find(group.begin(), group.end(), j) != group.end() &&
+           skeleton.Children(j).size() == 1;
+  };
+  std::vector<Limb> limbs;
+  for (int end : group) {
+    if (!skeleton.Children(end).empty()) continue;
+    const int lower = skeleton.parent(end);
+    if (!in_chain(lower)) continue;
+    const int upper = skeleton.parent(lower);
+    if (!in_chain(upper) || skeleton.parent(upper) == kNoParent) continue;
+    limbs.push_back({upper, lower, end});
+  }
+  return limbs;
+}
+
+Eigen::MatrixXf LimbReachTable(const MotionDatabase& db, const std::vector<Limb>& limbs) {
+  const Eigen::MatrixXf& signals = db.signals();
+  Eigen::MatrixXf table(signals.rows(), 3 * limbs.size());
+  for (size_t i = 0; i < limbs.size(); ++i) {
+    const Limb& limb = limbs[i];
+    const Vector3d b1 = BoneOffset(db.skeleton(), limb.lower), b2 = BoneOffset(db.skeleton(), limb.end);
+    for (int f = 0; f < signals.rows(); ++f) {
+      const Quaterniond q1 = LocalRotation(db, limb.upper, signals.row(f).segment<3>(3 * limb.upper).cast<double>());
+      const Quaterniond q2 = LocalRotation(db, limb.lower, signals.row(f).segment<3>(3 * limb.lower).cast<double>());
+      table.row(f).segment<3>(3 * i) = (q1 * (b1 + q2 * b2)).cast<float>();
+    }
+  }
+  return table;
+}
+
+void ReachLimbs(const MotionDatabase& db, const std::vector<Limb>& limbs, const Eigen::MatrixXd& reach,
+                double strength, Eigen::MatrixXd& out) {
+  for (size_t i = 0; i < limbs.size(); ++i) {
+    const Limb& limb = limbs[i];
+    const LimbGeometry g = GeometryOf(db, limb);
+    const double l1 = g.upper_bone.norm(), l2 = g.lower_bone.norm();
+    if (l1 <= 0.0 || l2 <= 0.0) continue;
+    for (int f = 0; f < out.rows(); ++f) {
+      const Quaterniond q1 = LocalRotation(db, limb.upper, out.row(f).segment<3>(3 * limb.upper).transpose());
+      const Quaterniond q2 = LocalRotation(db, limb.lower, out.row(f).segment<3>(3 * limb.lower).transpose());
+      const Vector3d elbow = q1 * g.upper_bone, forearm = q1 * (q2 * g.lower_bone);
+      const Vector3d tip = elbow + forearm;
+      Vector3d target = tip + strength * (reach.row(f).segment<3>(3 * i).transpose() - tip);
+      // Out of the limb's reach, or folded onto itself: the nearest reachable distance. (A target
+      // between two reachable points, as blends of captured hands are, is reachable.)
+      const double d = std::clamp(target.norm(), std::abs(l1 - l2) + 1e-3 * (l1 + l2), l1 + l2);
+      if (!(target.norm() > 0.0)) continue;
+      target *= d / target.norm();
+      // Bend about the hinge through the elbow until the tip is at distance d from the shoulder.
+      const Vector3d n = q1 * g.hinge;
+      const Vector3d e_perp = elbow - elbow.dot(n) * n, w_perp = forearm - forearm.dot(n) * n;
+      const double pe = e_perp.norm(), pw = w_perp.norm();
+      if (pe < 1e-9 || pw < 1e-9) continue;
+      const double along = elbow.dot(n) * forearm.dot(n);
+      const double c = std::clamp(((d * d - l1 * l1 - l2 * l2) / 2.0 - along) / (pe * pw), -1.0, 1.0);
+      const double theta0 = std::atan2(e_perp.cross(w_perp).dot(n), e_perp.dot(w_perp));
+      // Of the two bends that reach, the one on the elbow's own side (an arm captured a little
+      // past straight stays so rather than flipping through it).
+      const double theta = std::copysign(std::acos(c), theta0);
+      const Quaterniond bend(Eigen::AngleAxisd(theta - theta0, n));
+      const Vector3d bent = elbow + bend * forearm;
+      const Quaterniond swing = Quaterniond::FromTwoVectors(bent, target);
+      const Quaterniond new_q1 = swing * q1, new_q2 = q1.conjugate() * bend * q1 * q2;
+      out.row(f).segment<3>(3 * limb.upper) = LogMap(db.joint_means()[limb.upper].conjugate() * new_q1).transpose();
+      out.row(f).segment<3>(3 * limb.lower) = LogMap(db.joint_means()[limb.lower].conjugate() * new_q2).transpose();
+    }
+  }
+}
+
+}  // namespace mocapfill
