@@ -118,16 +118,12 @@ void ReportGroup(const FragmentContext& ctx, const std::string& name, const Grou
   }
 }
 
-// The synthesised limbs among `joints` (legs aside: planting holds them) reach where the
-// blended takes have their tips (limb_reach.h).
-void ReachLikeTheTakes(const FragmentContext& ctx, const std::vector<int>& joints,
-                       const std::vector<std::uint8_t>& hanging, const GroupResult& r, int blend,
-                       Eigen::MatrixXd& out) {
+// The arms synthesised together among `joints` reach where the blended takes have their hands
+// (limb_reach.h).
+void ReachLikeTheTakes(const FragmentContext& ctx, const std::vector<Limb>& arms, const std::vector<int>& joints,
+                       const GroupResult& r, int blend, Eigen::MatrixXd& out) {
   if (ctx.options->limb_reach <= 0.0) return;
-  std::vector<Limb> limbs;
-  for (const Limb& limb : ReachingLimbs(ctx.db->skeleton(), joints))
-    if (!hanging[limb.end] && limb.upper != ctx.db->root_joint() && limb.lower != ctx.db->root_joint())
-      limbs.push_back(limb);
+  const std::vector<Limb> limbs = LimbsWithin(arms, joints);
   if (limbs.empty()) return;
   const Eigen::MatrixXf table = LimbReachTable(*ctx.db, limbs);
   std::vector<int> columns(table.cols());
@@ -226,8 +222,8 @@ std::vector<std::uint8_t> HangingJoints(const MotionDatabase& db) {
 
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
-                         const SketchSignals& s, const FragmentFillOptions& options, Eigen::MatrixXd& out,
-                         FragmentFillReport& report, StageTimer& timer) {
+                         const std::vector<Limb>& arms, const SketchSignals& s, const FragmentFillOptions& options,
+                         Eigen::MatrixXd& out, FragmentFillReport& report, StageTimer& timer) {
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -267,7 +263,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
       const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, synthesized, options.blend, out, timer);
-      ReachLikeTheTakes(ctx, joints, hanging, r, options.blend, out);
+      ReachLikeTheTakes(ctx, arms, joints, r, options.blend, out);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
       if (contacts) VoteContacts(ctx, *contacts, joints, r, options.blend, report);
     }
@@ -289,7 +285,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       // the 32 of a leg chain do not (docs/fill.md, step 6).
       const GroupResult r =
           SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets, blend, out, timer);
-      ReachLikeTheTakes(ctx, group.joints, hanging, r, blend, out);
+      ReachLikeTheTakes(ctx, arms, group.joints, r, blend, out);
       ReportGroup(ctx, group.name, r, blend, report);
       if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
       std::string drivers;
@@ -340,7 +336,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
 
 }  // namespace
 
-FragmentFillEngine::FragmentFillEngine(const MotionDatabase& db) : db_(db) {}
+FragmentFillEngine::FragmentFillEngine(const MotionDatabase& db) : db_(db), arms_(ArmsOf(db.skeleton())) {}
 FragmentFillEngine::~FragmentFillEngine() = default;
 
 Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const FragmentFillOptions& options,
@@ -366,7 +362,7 @@ Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const Frag
   } else if (options.method == FillMethod::kNearest) {
     FillNearest(db_, s, options, out);
   } else {
-    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, s, options, out, report, timer));
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arms_, s, options, out, report, timer));
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;

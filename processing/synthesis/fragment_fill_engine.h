@@ -13,6 +13,7 @@
 #include "processing/core/motion_database.h"
 #include "processing/synthesis/fragment_fill_options.h"
 #include "processing/synthesis/fragment_fill_report.h"
+#include "processing/synthesis/limb_reach.h"
 
 namespace mocapfill {
 
@@ -58,6 +59,7 @@ class FragmentFillEngine {
   std::unique_ptr<MatchingDatabase> cache_;
   CoverageYardstick yardstick_;  // of cache_
   std::unique_ptr<DatabaseContacts> contacts_;  // the takes' foot contacts, found on first need
+  std::vector<Limb> arms_;                      // the rig's arms (limb_reach.h)
 };
 
 }  // namespace mocapfill

@@ -1,9 +1,11 @@
 #include "processing/synthesis/limb_reach.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "processing/core/rotation.h"
+#include "processing/retargeting/rig_mapping.h"
 
 namespace mocapfill {
 
@@ -46,22 +48,27 @@ LimbGeometry GeometryOf(const MotionDatabase& db, const Limb& limb) {
 
 }  // namespace
 
-std::vector<Limb> ReachingLimbs(const Skeleton& skeleton, const std::vector<int>& group) {
-  // Each joint of the limb in the group, and the upper two on a chain (one child each).
-  auto in_chain = [&](int j) {
-    return j != kNoParent && std::find(group.begin(), group.end(), j) != group.end() &&
-           skeleton.Children(j).size() == 1;
-  };
-  std::vector<Limb> limbs;
-  for (int end : group) {
-    if (!skeleton.Children(end).empty()) continue;
-    const int lower = skeleton.parent(end);
-    if (!in_chain(lower)) continue;
-    const int upper = skeleton.parent(lower);
-    if (!in_chain(upper) || skeleton.parent(upper) == kNoParent) continue;
-    limbs.push_back({upper, lower, end});
+std::vector<Limb> ArmsOf(const Skeleton& skeleton) {
+  Result<RigMapping> mapping = MapHumanoid(skeleton, {});
+  if (!mapping.ok()) return {};
+  using B = HumanoidBone;
+  std::vector<Limb> arms;
+  for (const auto& bones : {std::array{B::kLeftUpperArm, B::kLeftLowerArm, B::kLeftHand},
+                            std::array{B::kRightUpperArm, B::kRightLowerArm, B::kRightHand}}) {
+    const Limb arm{mapping->joint(bones[0]), mapping->joint(bones[1]), mapping->joint(bones[2])};
+    if (arm.upper < 0 || arm.lower < 0 || arm.end < 0) continue;
+    if (skeleton.parent(arm.lower) != arm.upper || skeleton.parent(arm.end) != arm.lower) continue;
+    arms.push_back(arm);
   }
-  return limbs;
+  return arms;
+}
+
+std::vector<Limb> LimbsWithin(const std::vector<Limb>& limbs, const std::vector<int>& joints) {
+  auto in = [&](int j) { return std::find(joints.begin(), joints.end(), j) != joints.end(); };
+  std::vector<Limb> within;
+  for (const Limb& limb : limbs)
+    if (in(limb.upper) && in(limb.lower) && in(limb.end)) within.push_back(limb);
+  return within;
 }
 
 Eigen::MatrixXf LimbReachTable(const MotionDatabase& db, const std::vector<Limb>& limbs) {

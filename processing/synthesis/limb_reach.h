@@ -5,28 +5,32 @@
 // and that point is the least-squares estimate of where the hand is. The same blend
 // (candidates, weights, stretching and cross-fades) is run on where each take has its hand
 // relative to the shoulder, and the arm is then bent and turned (two-bone IK in the shoulder's
-// frame) to reach that point; the hand keeps its own rotation.
+// frame) half way to that point (FragmentFillOptions::limb_reach): all the way lost again on
+// gestures, where a blend of takes that disagree has a hand point that no one take reaches.
+// The hand keeps its own rotation.
 #pragma once
 
 #include <Eigen/Core>
-#include <cstdint>
 #include <vector>
 
 #include "processing/core/motion_database.h"
 
 namespace mocapfill {
 
-// Two bones ending at a limb's tip, all three joints synthesised together.
+// Two bones ending at a limb's tip (an arm: upper arm, forearm, hand).
 struct Limb {
   int upper = -1;  // shoulder joint of the two bones (upper arm)
   int lower = -1;  // elbow (forearm)
   int end = -1;    // tip (hand)
 };
 
-// The limbs among a group of joints: each joint of the group that ends a chain (no children)
-// whose parent and grandparent are in the group with no other child (a hand, its forearm and
-// upper arm; not a head on a neck on a chest).
-std::vector<Limb> ReachingLimbs(const Skeleton& skeleton, const std::vector<int>& group);
+// The rig's arms by its humanoid mapping (names and hierarchy): upper arm, forearm and hand
+// where each is the next one's parent (a twist joint between them leaves the arm out). None
+// for a rig that does not map to a humanoid.
+std::vector<Limb> ArmsOf(const Skeleton& skeleton);
+
+// The limbs whose three joints are all among `joints`.
+std::vector<Limb> LimbsWithin(const std::vector<Limb>& limbs, const std::vector<int>& joints);
 
 // Per database frame (rows of db.signals()), 3 columns per limb: the tip's position relative
 // to the upper joint, in the upper joint's parent frame (metres).

@@ -27,9 +27,7 @@ struct CapturedArms {
 
 CapturedArms CapturedArmsEvery(int step, int shift) {
   const MotionDatabase& db = testing::DefaultDb();
-  std::vector<int> all(db.num_joints());
-  for (int j = 0; j < db.num_joints(); ++j) all[j] = j;
-  CapturedArms c{ReachingLimbs(db.skeleton(), all), {}, {}};
+  CapturedArms c{ArmsOf(db.skeleton()), {}, {}};
   const Eigen::MatrixXf table = LimbReachTable(db, c.limbs);
   const int rows = (db.num_frames() - shift) / step;
   c.channels.resize(rows, db.num_channels());
@@ -50,22 +48,28 @@ Eigen::Vector3d TipOf(const MotionDatabase& db, const Limb& limb, const Eigen::M
   return local(limb.upper) * (s.joint(limb.lower).rest_translation + local(limb.lower) * s.joint(limb.end).rest_translation);
 }
 
-TEST(LimbReach, ArmsOfTheDatabaseRigReachNeitherLegsNorHead) {
-  const MotionDatabase& db = testing::DefaultDb();
-  std::vector<int> all(db.num_joints());
-  for (int j = 0; j < db.num_joints(); ++j) all[j] = j;
-  std::vector<std::string> tips;
-  for (const Limb& limb : ReachingLimbs(db.skeleton(), all))
-    tips.push_back(db.skeleton().name(limb.upper) + ">" + db.skeleton().name(limb.lower) + ">" +
-                   db.skeleton().name(limb.end));
-  // The toes end the legs' chains too; the fill leaves those to planting. The head hangs on a
-  // neck on the chest, which carries the arms as well: no limb.
-  EXPECT_EQ(tips, (std::vector<std::string>{"UpperArm_L>LowerArm_L>Hand_L", "UpperArm_R>LowerArm_R>Hand_R",
-                                            "LowerLeg_L>Foot_L>Toes_L", "LowerLeg_R>Foot_R>Toes_R"}));
-  const std::vector<int> arm = {*db.skeleton().Find("Shoulder_L"), *db.skeleton().Find("UpperArm_L"),
-                                *db.skeleton().Find("LowerArm_L"), *db.skeleton().Find("Hand_L")};
-  EXPECT_EQ(ReachingLimbs(db.skeleton(), arm).size(), 1u);
-  EXPECT_TRUE(ReachingLimbs(db.skeleton(), {*db.skeleton().Find("Neck"), *db.skeleton().Find("Head")}).empty());
+std::vector<std::string> Named(const Skeleton& s, const std::vector<Limb>& limbs) {
+  std::vector<std::string> names;
+  for (const Limb& limb : limbs) names.push_back(s.name(limb.upper) + ">" + s.name(limb.lower) + ">" + s.name(limb.end));
+  return names;
+}
+
+// Arms by the rig's humanoid mapping, on the database's rig and on CMU's (whose hands carry
+// finger joints and whose head hangs on two neck joints: a rule by chain ends alone found no
+// arm there and took the neck for one).
+TEST(LimbReach, ArmsOfTheDatabaseRigAndOfCmu) {
+  const Skeleton& s = testing::DefaultDb().skeleton();
+  const std::vector<Limb> arms = ArmsOf(s);
+  EXPECT_EQ(Named(s, arms), (std::vector<std::string>{"UpperArm_L>LowerArm_L>Hand_L", "UpperArm_R>LowerArm_R>Hand_R"}));
+  const std::vector<int> left_group = {*s.Find("Shoulder_L"), *s.Find("UpperArm_L"), *s.Find("LowerArm_L"),
+                                       *s.Find("Hand_L")};
+  EXPECT_EQ(Named(s, LimbsWithin(arms, left_group)), (std::vector<std::string>{"UpperArm_L>LowerArm_L>Hand_L"}));
+  EXPECT_TRUE(LimbsWithin(arms, {*s.Find("UpperArm_L"), *s.Find("LowerArm_L")}).empty());
+
+  Result<Scene> cmu = ImportFile(testing::FixturePath("bvh/cmu_01_01_short.bvh"));
+  ASSERT_TRUE(cmu.ok()) << cmu.status().message();
+  EXPECT_EQ(Named(cmu->skeleton, ArmsOf(cmu->skeleton)),
+            (std::vector<std::string>{"LeftArm>LeftForeArm>LeftHand", "RightArm>RightForeArm>RightHand"}));
 }
 
 // Asked to reach where its own hand is, a captured arm stays as it is; asked to reach where the
