@@ -112,9 +112,10 @@ void ReachLimbs(const MotionDatabase& db, const std::vector<Limb>& limbs, const 
       const double along = elbow.dot(n) * forearm.dot(n);
       const double c = std::clamp(((d * d - l1 * l1 - l2 * l2) / 2.0 - along) / (pe * pw), -1.0, 1.0);
       const double theta0 = std::atan2(e_perp.cross(w_perp).dot(n), e_perp.dot(w_perp));
-      // Of the two bends that reach, the one on the elbow's own side (an arm captured a little
-      // past straight stays so rather than flipping through it).
-      const double theta = std::copysign(std::acos(c), theta0);
+      // Always on the elbow's own side of the hinge: choosing the side nearer the blend's own
+      // bend would flip the elbow through straight between two frames where the blend passes
+      // straight (an arm blended a little past straight is bent back to its side).
+      const double theta = std::acos(c);
       const Quaterniond bend(Eigen::AngleAxisd(theta - theta0, n));
       const Vector3d bent = elbow + bend * forearm;
       const Quaterniond swing = Quaterniond::FromTwoVectors(bent, target);
