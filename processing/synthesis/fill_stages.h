@@ -54,7 +54,8 @@ bool RootFeaturesKeyed(const MotionDatabase& db, const SketchSignals& s);
 // Signals (frames x database channels) -> clip; fixed joints that were not textured keep the
 // sketch's exact rotations. A root the sketch keys keeps the sketch's trajectory, or when
 // textured its travel as the signals integrate to it, pinned onto the sketch's translation keys,
-// with the sketch's height. Every frame of the result is keyed.
+// with its height a monotone cubic through the sketch's height keys. Every frame of the result
+// is keyed.
 Result<MotionClip> ComposeFill(const MotionDatabase& db, const SketchSignals& s, const Eigen::MatrixXd& out,
                                const MotionClip& sketch, bool textured);
 

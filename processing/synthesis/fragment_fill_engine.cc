@@ -306,9 +306,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     // A keyed root's travel is textured like a keyed joint (its keys' low band plus the lead's
     // detail): the sketch's path, linear between keys, kinks at every key and jolts the whole
     // body there. The planar velocities are textured here and the path they integrate to is
-    // pinned onto the keys (ComposeFill). The height keeps the sketch's path: a bob the legs'
-    // planted feet do not follow made the knees snap into the keys. The yaw rate is left as
-    // keyed: the heading it integrates to must meet the root's rotation keys.
+    // pinned onto the keys (ComposeFill). The height is not textured (ComposeFill runs a smooth
+    // curve through its keys): a captured bob the legs' planted feet do not follow made the
+    // knees snap into the keys. The yaw rate is left as keyed: the heading it integrates to
+    // must meet the root's rotation keys.
     std::vector<int> root_channels;
     if (RootFeaturesKeyed(db, s))
       for (int f : {kRootForward, kRootLateral}) root_channels.push_back(db.RootFeatureChannel(f));
