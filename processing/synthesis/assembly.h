@@ -37,11 +37,11 @@ std::vector<double> DistanceWeights(const std::vector<Candidate>& cands, const s
 
 // Writes `channels` of every fragment's frames into `out` (frames x channels): the candidates'
 // captured signals stretched linearly to the fragment's length, averaged over the lead and the
-// nearest others with `weights` (by default exp(-d / mean d), DistanceWeights). Without cross-fade a fragment owns
-// [first, last) (the last one its end frame too); with it, each fragment's candidates extend
-// `crossfade` of its length beyond both ends (the takes continue there) and overlapping
-// fragments are mixed with smoothstep fade weights, so there is no seam to smooth. Returns how
-// many candidates each fragment blended.
+// nearest others with `weights` (by default exp(-d / mean d), DistanceWeights). Without
+// cross-fade a fragment owns [first, last) (the last one its end frame too); with it, each
+// fragment's candidates extend `crossfade` of its length beyond both ends (the takes continue
+// there) and overlapping fragments are mixed with smoothstep fade weights, so there is no seam
+// to smooth. Returns how many candidates each fragment blended.
 std::vector<int> AssembleFragments(const AssemblyInputs& in, Eigen::MatrixXd& out);
 
 // Seam smoothing: at every fragment boundary b, each listed channel's jump beyond the expected

@@ -43,11 +43,11 @@ void PinTravelOntoKeys(const MotionClip& sketch, int root, MotionClip& clip) {
   // a hip rising past its keys would ask the planted legs for more reach than the keys do.
   std::vector<double> key_heights;
   for (int f : keys) key_heights.push_back(keyed(f, 1));
-  std::vector<double> height = MonotoneCubicThroughKeys(keys, key_heights, clip.num_frames);
-  for (int f = 0; f < clip.num_frames; ++f)
-    if (keys.empty() || f < keys.front() || f > keys.back()) height[f] = keyed(f, 1);
-  for (int f = 0; f < clip.num_frames; ++f)
-    clip.translation(f, root) = Eigen::Vector3d(path(f, 0), height[f], path(f, 2));
+  const std::vector<double> height = MonotoneCubicThroughKeys(keys, key_heights, clip.num_frames);
+  for (int f = 0; f < clip.num_frames; ++f) {
+    const bool between_keys = !keys.empty() && f >= keys.front() && f <= keys.back();
+    clip.translation(f, root) = Eigen::Vector3d(path(f, 0), between_keys ? height[f] : keyed(f, 1), path(f, 2));
+  }
 }
 
 }  // namespace

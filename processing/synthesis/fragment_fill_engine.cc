@@ -120,19 +120,19 @@ void ReportGroup(const FragmentContext& ctx, const std::string& name, const Grou
 
 // The arms synthesised together among `joints` reach where the blended takes have their hands
 // (limb_reach.h).
-void ReachLikeTheTakes(const FragmentContext& ctx, const std::vector<Limb>& arms, const std::vector<int>& joints,
+void ReachLikeTheTakes(const FragmentContext& ctx, const ArmReach* arm_reach, const std::vector<int>& joints,
                        const GroupResult& r, int blend, Eigen::MatrixXd& out) {
-  if (ctx.options->limb_reach <= 0.0) return;
-  const std::vector<Limb> limbs = LimbsWithin(arms, joints);
-  if (limbs.empty()) return;
-  const Eigen::MatrixXf table = LimbReachTable(*ctx.db, limbs);
-  std::vector<int> columns(table.cols());
-  for (int c = 0; c < table.cols(); ++c) columns[c] = c;
-  Eigen::MatrixXd reach = Eigen::MatrixXd::Zero(out.rows(), table.cols());
+  if (!arm_reach) return;
+  const std::vector<int> arms = LimbsWithin(arm_reach->arms, joints);
+  if (arms.empty()) return;
+  std::vector<int> columns;
+  for (int i : arms)
+    for (int c = 3 * i; c < 3 * i + 3; ++c) columns.push_back(c);
+  Eigen::MatrixXd reach = Eigen::MatrixXd::Zero(out.rows(), arm_reach->table.cols());
   const AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, columns,
-                                ctx.options->crossfade, &table, &r.weights};
+                                ctx.options->crossfade, &arm_reach->table, &r.weights};
   AssembleFragments(assembly, reach);
-  ReachLimbs(*ctx.db, limbs, reach, ctx.options->limb_reach, out);
+  ReachLimbs(*ctx.db, *arm_reach, arms, reach, ctx.options->limb_reach, out);
 }
 
 // The contacts of the synthesised standing joints among `joints`: the matched takes' own,
@@ -222,8 +222,9 @@ std::vector<std::uint8_t> HangingJoints(const MotionDatabase& db) {
 
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
-                         const std::vector<Limb>& arms, const SketchSignals& s, const FragmentFillOptions& options,
-                         Eigen::MatrixXd& out, FragmentFillReport& report, StageTimer& timer) {
+                         std::unique_ptr<ArmReach>& arm_reach, const SketchSignals& s,
+                         const FragmentFillOptions& options, Eigen::MatrixXd& out, FragmentFillReport& report,
+                         StageTimer& timer) {
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -259,11 +260,16 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     contacts = std::make_unique<DatabaseContacts>(std::move(found));
     timer.Mark("db_contacts");
   }
+  if (options.limb_reach > 0.0 && !arm_reach) {
+    arm_reach = std::make_unique<ArmReach>(PrepareArmReach(db));
+    timer.Mark("arm_reach");
+  }
+  const ArmReach* reaching = options.limb_reach > 0.0 ? arm_reach.get() : nullptr;
   const std::vector<DrivenChannel> all_keyed = AllKeyedDrivers(db, s, options);
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
       const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, synthesized, options.blend, out, timer);
-      ReachLikeTheTakes(ctx, arms, joints, r, options.blend, out);
+      ReachLikeTheTakes(ctx, reaching, joints, r, options.blend, out);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
       if (contacts) VoteContacts(ctx, *contacts, joints, r, options.blend, report);
     }
@@ -285,7 +291,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       // the 32 of a leg chain do not (docs/fill.md, step 6).
       const GroupResult r =
           SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets, blend, out, timer);
-      ReachLikeTheTakes(ctx, arms, group.joints, r, blend, out);
+      ReachLikeTheTakes(ctx, reaching, group.joints, r, blend, out);
       ReportGroup(ctx, group.name, r, blend, report);
       if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
       std::string drivers;
@@ -337,7 +343,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
 
 }  // namespace
 
-FragmentFillEngine::FragmentFillEngine(const MotionDatabase& db) : db_(db), arms_(ArmsOf(db.skeleton())) {}
+FragmentFillEngine::FragmentFillEngine(const MotionDatabase& db) : db_(db) {}
 FragmentFillEngine::~FragmentFillEngine() = default;
 
 Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const FragmentFillOptions& options,
@@ -363,7 +369,7 @@ Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const Frag
   } else if (options.method == FillMethod::kNearest) {
     FillNearest(db_, s, options, out);
   } else {
-    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arms_, s, options, out, report, timer));
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arm_reach_, s, options, out, report, timer));
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;

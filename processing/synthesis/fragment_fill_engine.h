@@ -59,7 +59,7 @@ class FragmentFillEngine {
   std::unique_ptr<MatchingDatabase> cache_;
   CoverageYardstick yardstick_;  // of cache_
   std::unique_ptr<DatabaseContacts> contacts_;  // the takes' foot contacts, found on first need
-  std::vector<Limb> arms_;                      // the rig's arms (limb_reach.h)
+  std::unique_ptr<ArmReach> arm_reach_;         // the rig's arms (limb_reach.h), found on first need
 };
 
 }  // namespace mocapfill

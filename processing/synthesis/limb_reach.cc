@@ -23,29 +23,6 @@ Quaterniond LocalRotation(const MotionDatabase& db, int j, const Vector3d& chann
   return db.joint_means()[j] * ExpMap(channels);
 }
 
-struct LimbGeometry {
-  Vector3d upper_bone, lower_bone;  // offsets of the lower joint and of the tip
-  Vector3d hinge;                   // elbow axis in the upper joint's frame
-};
-
-// The elbow's axis: the bend plane's normal where the database bends the limb most (a nearly
-// straight limb shows no plane of its own).
-LimbGeometry GeometryOf(const MotionDatabase& db, const Limb& limb) {
-  const Skeleton& s = db.skeleton();
-  LimbGeometry g{BoneOffset(s, limb.lower), BoneOffset(s, limb.end), Vector3d::UnitX()};
-  double best = 0.0;
-  const Eigen::MatrixXf& signals = db.signals();
-  for (int f = 0; f < signals.rows(); ++f) {
-    const Quaterniond q2 = LocalRotation(db, limb.lower, signals.row(f).segment<3>(3 * limb.lower).cast<double>());
-    const Vector3d n = g.upper_bone.cross(q2 * g.lower_bone);
-    if (n.norm() > best) {
-      best = n.norm();
-      g.hinge = n.normalized();
-    }
-  }
-  return g;
-}
-
 }  // namespace
 
 std::vector<Limb> ArmsOf(const Skeleton& skeleton) {
@@ -63,40 +40,53 @@ std::vector<Limb> ArmsOf(const Skeleton& skeleton) {
   return arms;
 }
 
-std::vector<Limb> LimbsWithin(const std::vector<Limb>& limbs, const std::vector<int>& joints) {
+std::vector<int> LimbsWithin(const std::vector<Limb>& limbs, const std::vector<int>& joints) {
   auto in = [&](int j) { return std::find(joints.begin(), joints.end(), j) != joints.end(); };
-  std::vector<Limb> within;
-  for (const Limb& limb : limbs)
-    if (in(limb.upper) && in(limb.lower) && in(limb.end)) within.push_back(limb);
+  std::vector<int> within;
+  for (size_t i = 0; i < limbs.size(); ++i)
+    if (in(limbs[i].upper) && in(limbs[i].lower) && in(limbs[i].end)) within.push_back(static_cast<int>(i));
   return within;
 }
 
-Eigen::MatrixXf LimbReachTable(const MotionDatabase& db, const std::vector<Limb>& limbs) {
+ArmReach PrepareArmReach(const MotionDatabase& db) {
+  const Skeleton& s = db.skeleton();
   const Eigen::MatrixXf& signals = db.signals();
-  Eigen::MatrixXf table(signals.rows(), 3 * limbs.size());
-  for (size_t i = 0; i < limbs.size(); ++i) {
-    const Limb& limb = limbs[i];
-    const Vector3d b1 = BoneOffset(db.skeleton(), limb.lower), b2 = BoneOffset(db.skeleton(), limb.end);
+  ArmReach r{ArmsOf(s), {}, Eigen::MatrixXf(signals.rows(), 0)};
+  r.table.resize(signals.rows(), 3 * r.arms.size());
+  for (size_t i = 0; i < r.arms.size(); ++i) {
+    const Limb& arm = r.arms[i];
+    const Vector3d b1 = BoneOffset(s, arm.lower), b2 = BoneOffset(s, arm.end);
+    // The elbow's axis: the bend plane's normal where the database bends the arm most (a
+    // nearly straight arm shows no plane of its own).
+    Vector3d hinge = Vector3d::UnitX();
+    double most = 0.0;
     for (int f = 0; f < signals.rows(); ++f) {
-      const Quaterniond q1 = LocalRotation(db, limb.upper, signals.row(f).segment<3>(3 * limb.upper).cast<double>());
-      const Quaterniond q2 = LocalRotation(db, limb.lower, signals.row(f).segment<3>(3 * limb.lower).cast<double>());
-      table.row(f).segment<3>(3 * i) = (q1 * (b1 + q2 * b2)).cast<float>();
+      const Quaterniond q1 = LocalRotation(db, arm.upper, signals.row(f).segment<3>(3 * arm.upper).cast<double>());
+      const Quaterniond q2 = LocalRotation(db, arm.lower, signals.row(f).segment<3>(3 * arm.lower).cast<double>());
+      const Vector3d forearm = q2 * b2, n = b1.cross(forearm);
+      if (n.norm() > most) {
+        most = n.norm();
+        hinge = n.normalized();
+      }
+      r.table.row(f).segment<3>(3 * i) = (q1 * (b1 + forearm)).cast<float>();
     }
+    r.hinges.push_back(hinge);
   }
-  return table;
+  return r;
 }
 
-void ReachLimbs(const MotionDatabase& db, const std::vector<Limb>& limbs, const Eigen::MatrixXd& reach,
-                double strength, Eigen::MatrixXd& out) {
-  for (size_t i = 0; i < limbs.size(); ++i) {
-    const Limb& limb = limbs[i];
-    const LimbGeometry g = GeometryOf(db, limb);
-    const double l1 = g.upper_bone.norm(), l2 = g.lower_bone.norm();
+void ReachLimbs(const MotionDatabase& db, const ArmReach& prepared, const std::vector<int>& which,
+                const Eigen::MatrixXd& reach, double strength, Eigen::MatrixXd& out) {
+  const Skeleton& s = db.skeleton();
+  for (int i : which) {
+    const Limb& limb = prepared.arms[i];
+    const Vector3d upper_bone = BoneOffset(s, limb.lower), lower_bone = BoneOffset(s, limb.end);
+    const double l1 = upper_bone.norm(), l2 = lower_bone.norm();
     if (l1 <= 0.0 || l2 <= 0.0) continue;
     for (int f = 0; f < out.rows(); ++f) {
       const Quaterniond q1 = LocalRotation(db, limb.upper, out.row(f).segment<3>(3 * limb.upper).transpose());
       const Quaterniond q2 = LocalRotation(db, limb.lower, out.row(f).segment<3>(3 * limb.lower).transpose());
-      const Vector3d elbow = q1 * g.upper_bone, forearm = q1 * (q2 * g.lower_bone);
+      const Vector3d elbow = q1 * upper_bone, forearm = q1 * (q2 * lower_bone);
       const Vector3d tip = elbow + forearm;
       Vector3d target = tip + strength * (reach.row(f).segment<3>(3 * i).transpose() - tip);
       // Out of the limb's reach, or folded onto itself: the nearest reachable distance. (A target
@@ -105,7 +95,7 @@ void ReachLimbs(const MotionDatabase& db, const std::vector<Limb>& limbs, const 
       if (!(target.norm() > 0.0)) continue;
       target *= d / target.norm();
       // Bend about the hinge through the elbow until the tip is at distance d from the shoulder.
-      const Vector3d n = q1 * g.hinge;
+      const Vector3d n = q1 * prepared.hinges[i];
       const Vector3d e_perp = elbow - elbow.dot(n) * n, w_perp = forearm - forearm.dot(n) * n;
       const double pe = e_perp.norm(), pw = w_perp.norm();
       if (pe < 1e-9 || pw < 1e-9) continue;

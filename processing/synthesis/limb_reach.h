@@ -29,19 +29,25 @@ struct Limb {
 // for a rig that does not map to a humanoid.
 std::vector<Limb> ArmsOf(const Skeleton& skeleton);
 
-// The limbs whose three joints are all among `joints`.
-std::vector<Limb> LimbsWithin(const std::vector<Limb>& limbs, const std::vector<int>& joints);
+// Which of `limbs` (their indices) have all three joints among `joints`.
+std::vector<int> LimbsWithin(const std::vector<Limb>& limbs, const std::vector<int>& joints);
 
-// Per database frame (rows of db.signals()), 3 columns per limb: the tip's position relative
-// to the upper joint, in the upper joint's parent frame (metres).
-Eigen::MatrixXf LimbReachTable(const MotionDatabase& db, const std::vector<Limb>& limbs);
+// What the reach needs of a database's arms, found once per database (a pass over its frames).
+struct ArmReach {
+  std::vector<Limb> arms;                // ArmsOf the database's rig
+  std::vector<Eigen::Vector3d> hinges;   // per arm, the elbow's axis in the upper joint's frame
+  // Per database frame (rows of db.signals()), 3 columns per arm: the hand's position relative
+  // to the upper-arm joint, in that joint's parent frame (metres).
+  Eigen::MatrixXf table;
+};
+ArmReach PrepareArmReach(const MotionDatabase& db);
 
-// Moves the channels of each limb's upper and lower joints in `out` (fill frames x channels,
-// tangent coordinates) so that its tip lands at `strength` of the way from where the
-// channels put it to `reach` (fill frames x 3 per limb, as LimbReachTable), bending the
-// elbow about its anatomical hinge and turning the upper joint; the tip joint's own channels
-// stay.
-void ReachLimbs(const MotionDatabase& db, const std::vector<Limb>& limbs, const Eigen::MatrixXd& reach,
-                double strength, Eigen::MatrixXd& out);
+// Moves the channels of the upper and lower joints of the arms `which` (indices into
+// prepared.arms) in `out` (fill frames x channels, tangent coordinates) so that each hand
+// lands at `strength` of the way from where the channels put it to `reach` (fill frames x the
+// table's columns), bending the elbow about its hinge and turning the upper joint; the hand's
+// own channels stay.
+void ReachLimbs(const MotionDatabase& db, const ArmReach& prepared, const std::vector<int>& which,
+                const Eigen::MatrixXd& reach, double strength, Eigen::MatrixXd& out);
 
 }  // namespace mocapfill

@@ -20,6 +20,7 @@ namespace {
 
 // Every 13th frame of the default database, as fill channels (rows) and as reach targets.
 struct CapturedArms {
+  ArmReach prepared;
   std::vector<Limb> limbs;
   Eigen::MatrixXd channels;
   Eigen::MatrixXd reach;
@@ -27,8 +28,9 @@ struct CapturedArms {
 
 CapturedArms CapturedArmsEvery(int step, int shift) {
   const MotionDatabase& db = testing::DefaultDb();
-  CapturedArms c{ArmsOf(db.skeleton()), {}, {}};
-  const Eigen::MatrixXf table = LimbReachTable(db, c.limbs);
+  CapturedArms c{PrepareArmReach(db), {}, {}, {}};
+  c.limbs = c.prepared.arms;
+  const Eigen::MatrixXf& table = c.prepared.table;
   const int rows = (db.num_frames() - shift) / step;
   c.channels.resize(rows, db.num_channels());
   c.reach.resize(rows, table.cols());
@@ -39,7 +41,7 @@ CapturedArms CapturedArmsEvery(int step, int shift) {
   return c;
 }
 
-// Where the channels put each limb's tip (as LimbReachTable does for the database's frames).
+// Where the channels put each limb's tip (as ArmReach::table has it for the database's frames).
 Eigen::Vector3d TipOf(const MotionDatabase& db, const Limb& limb, const Eigen::MatrixXd& channels, int row) {
   auto local = [&](int j) {
     return Eigen::Quaterniond(db.joint_means()[j] * ExpMap(channels.row(row).segment<3>(3 * j).transpose()));
@@ -54,6 +56,12 @@ std::vector<std::string> Named(const Skeleton& s, const std::vector<Limb>& limbs
   return names;
 }
 
+std::vector<Limb> Picked(const std::vector<Limb>& limbs, const std::vector<int>& which) {
+  std::vector<Limb> picked;
+  for (int i : which) picked.push_back(limbs[i]);
+  return picked;
+}
+
 // Arms by the rig's humanoid mapping, on the database's rig and on CMU's (whose hands carry
 // finger joints and whose head hangs on two neck joints: a rule by chain ends alone found no
 // arm there and took the neck for one).
@@ -63,7 +71,8 @@ TEST(LimbReach, ArmsOfTheDatabaseRigAndOfCmu) {
   EXPECT_EQ(Named(s, arms), (std::vector<std::string>{"UpperArm_L>LowerArm_L>Hand_L", "UpperArm_R>LowerArm_R>Hand_R"}));
   const std::vector<int> left_group = {*s.Find("Shoulder_L"), *s.Find("UpperArm_L"), *s.Find("LowerArm_L"),
                                        *s.Find("Hand_L")};
-  EXPECT_EQ(Named(s, LimbsWithin(arms, left_group)), (std::vector<std::string>{"UpperArm_L>LowerArm_L>Hand_L"}));
+  EXPECT_EQ(Named(s, Picked(arms, LimbsWithin(arms, left_group))),
+            (std::vector<std::string>{"UpperArm_L>LowerArm_L>Hand_L"}));
   EXPECT_TRUE(LimbsWithin(arms, {*s.Find("UpperArm_L"), *s.Find("LowerArm_L")}).empty());
 
   Result<Scene> cmu = ImportFile(testing::FixturePath("bvh/cmu_01_01_short.bvh"));
@@ -79,8 +88,9 @@ TEST(LimbReach, CapturedArmsReachCapturedHands) {
   const MotionDatabase& db = testing::DefaultDb();
   const CapturedArms same = CapturedArmsEvery(13, 0);
   ASSERT_GT(same.channels.rows(), 100);
+  ASSERT_EQ(same.limbs.size(), 2u);  // both arms: reached as {0, 1} below
   Eigen::MatrixXd out = same.channels;
-  ReachLimbs(db, same.limbs, same.reach, 1.0, out);
+  ReachLimbs(db, same.prepared, {0, 1}, same.reach, 1.0, out);
 
   // Measured 0.0029 rad: the float table's rounding, on nearly straight captured arms, and arms
   // captured a hair past straight about the hinge, which the reach bends back to the elbow's side.
@@ -89,7 +99,7 @@ TEST(LimbReach, CapturedArmsReachCapturedHands) {
   const CapturedArms other = CapturedArmsEvery(13, 7);
   for (double strength : {1.0, 0.5}) {
     out = other.channels;
-    ReachLimbs(db, other.limbs, other.reach, strength, out);
+    ReachLimbs(db, other.prepared, {0, 1}, other.reach, strength, out);
     double worst = 0.0, moved = 0.0;
     for (size_t i = 0; i < other.limbs.size(); ++i) {
       const Limb& limb = other.limbs[i];

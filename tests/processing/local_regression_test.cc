@@ -105,7 +105,7 @@ TEST(LocalRegression, LowersTheErrorOfHeldOutLocomotion) {
     }
   }
   std::printf("unkeyed MPJPE %.3f cm plain average, %.3f cm local regression\n", mpjpe[0.0], mpjpe[0.3]);
-  EXPECT_LT(mpjpe[0.3], 0.97 * mpjpe[0.0]);  // measured 8.062 against 8.372 cm
+  EXPECT_LT(mpjpe[0.3], 0.97 * mpjpe[0.0]);  // measured 7.968 against 8.245 cm (8.062 / 8.372 before the arms reached)
 }
 
 }  // namespace
