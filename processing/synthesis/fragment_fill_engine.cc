@@ -7,6 +7,7 @@
 #include "processing/filtering/pyramid.h"
 #include "processing/synthesis/assembly.h"
 #include "processing/synthesis/baselines.h"
+#include "processing/synthesis/consensus_weights.h"
 #include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill_stages.h"
 #include "processing/synthesis/fragment_matching.h"
@@ -81,9 +82,11 @@ std::vector<std::vector<double>> BlendWeights(const FragmentContext& ctx, const 
 }
 
 // Matches on `driven`; the local regression of the blend (BlendWeights) runs on `regressors`.
+// With `positions` (GroupPositions of the group), the weights then move towards the
+// candidates' geometric median posture (consensus_weights.h).
 GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<DrivenChannel>& driven,
                             const std::vector<DrivenChannel>& regressors, const std::vector<int>& targets, int blend,
-                            Eigen::MatrixXd& out, StageTimer& timer) {
+                            Eigen::MatrixXd& out, StageTimer& timer, const Eigen::MatrixXf* positions = nullptr) {
   const Eigen::MatrixXd match = MatchingSignal(out, ctx.db->rate_hz(), *ctx.options);
   GroupResult r;
   r.candidates = MatchFragments(*ctx.mdb, match, ctx.fragments, driven, *ctx.options);
@@ -95,6 +98,10 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<Driven
   AssemblyInputs assembly{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, blend, targets,
                           ctx.options->crossfade};
   assembly.weights = &r.weights;
+  if (positions && ctx.options->consensus_iterations > 0 && blend > 1) {
+    r.weights = ConsensusWeights(assembly, *positions, ctx.options->consensus_iterations, ctx.options->consensus_floor_m);
+    timer.Mark("consensus");
+  }
   AssembleFragments(assembly, out);
   if (ctx.options->crossfade <= 0.0) {
     const int window = static_cast<int>(std::lround(ctx.options->seam_window_s * ctx.db->rate_hz()));
@@ -222,7 +229,8 @@ std::vector<std::uint8_t> HangingJoints(const MotionDatabase& db) {
 
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
-                         std::unique_ptr<ArmReach>& arm_reach, const SketchSignals& s,
+                         std::unique_ptr<ArmReach>& arm_reach, GroupPositionCache& group_positions,
+                         const SketchSignals& s,
                          const FragmentFillOptions& options, Eigen::MatrixXd& out, FragmentFillReport& report,
                          StageTimer& timer) {
   const double rate = db.rate_hz();
@@ -289,8 +297,18 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       // A group's candidates are matched on its few most correlated drivers, but what varies
       // among them is regressed on every keyed channel: 128 candidates support the wider fit,
       // the 32 of a leg chain do not (docs/fill.md, step 6).
-      const GroupResult r =
-          SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets, blend, out, timer);
+      // The legs' steps follow the sketch's own progression, not a consensus of the takes'.
+      const Eigen::MatrixXf* positions = nullptr;
+      if (!hanging[group.joints.back()] && options.consensus_iterations > 0) {
+        auto cached = group_positions.find(group.joints);
+        if (cached == group_positions.end()) {
+          cached = group_positions.emplace(group.joints, GroupPositions(db, group.joints)).first;
+          timer.Mark("group_positions");
+        }
+        positions = &cached->second;
+      }
+      const GroupResult r = SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets,
+                                            blend, out, timer, positions);
       ReachLikeTheTakes(ctx, reaching, group.joints, r, blend, out);
       ReportGroup(ctx, group.name, r, blend, report);
       if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
@@ -369,7 +387,7 @@ Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const Frag
   } else if (options.method == FillMethod::kNearest) {
     FillNearest(db_, s, options, out);
   } else {
-    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arm_reach_, s, options, out, report, timer));
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arm_reach_, group_positions_, s, options, out, report, timer));
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;

@@ -5,6 +5,8 @@
 // there). FillEngine (processing/fill) runs these and the PCA-based methods by name.
 #pragma once
 
+#include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -19,6 +21,10 @@ namespace mocapfill {
 
 class MatchingDatabase;
 struct DatabaseContacts;
+
+// Per upper-body joint group (its joints), the positions its rotations give the joints it
+// places in every database frame (consensus_weights.h: GroupPositions).
+using GroupPositionCache = std::map<std::vector<int>, Eigen::MatrixXf>;
 
 // The coverage yardstick of a matching database (coverage.h: ReferenceDistance), the driven
 // channels and the options it was measured with; distance < 0 until measured.
@@ -60,6 +66,7 @@ class FragmentFillEngine {
   CoverageYardstick yardstick_;  // of cache_
   std::unique_ptr<DatabaseContacts> contacts_;  // the takes' foot contacts, found on first need
   std::unique_ptr<ArmReach> arm_reach_;         // the rig's arms (limb_reach.h), found on first need
+  GroupPositionCache group_positions_;          // per upper-body group (consensus_weights.h), on first need
 };
 
 }  // namespace mocapfill

@@ -79,6 +79,12 @@ struct FragmentFillOptions {
   // Share of the way each synthesised arm moves from where the blended rotations put its hand
   // to where the blended takes have it (limb_reach.h); 0: as the rotations put it.
   double limb_reach = 0.5;
+  // Hierarchical: Weiszfeld steps moving each upper-body group's blend from the mean of its
+  // candidates' postures towards their geometric median over the take (consensus_weights.h);
+  // 0: the blend weights as matched and regressed. Candidates within consensus_floor_m of the
+  // consensus keep their weight.
+  int consensus_iterations = 25;
+  double consensus_floor_m = 0.05;
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching

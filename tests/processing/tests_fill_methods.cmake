@@ -1,8 +1,9 @@
 # Fill methods on the embedded default database and the shipped sketch.
 mocapfill_add_test(fill_tests
-  CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|SynthesisedJointsAreAboutAsSmoothAsTheCapture|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes)$]=]
+  CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|SynthesisedJointsAreAboutAsSmoothAsTheCapture|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc ${CMAKE_CURRENT_LIST_DIR}/local_regression_test.cc
-          ${CMAKE_CURRENT_LIST_DIR}/limb_reach_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/limb_reach_test.cc ${CMAKE_CURRENT_LIST_DIR}/consensus_weights_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/held_out_fill.cc
   LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_fill mocapfill_synthesis mocapfill_texturing
        mocapfill_formats)
 

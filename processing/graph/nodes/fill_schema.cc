@@ -51,6 +51,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
       NumberOption("limb_reach", d.limb_reach, 0.0, false, 1.0, "",
                    "move each synthesised arm this share of the way from where the blended rotations put its hand "
                    "to where the blended takes have it (0 = as the rotations put it)"),
+      IntOption("consensus", d.consensus_iterations, 0, 100,
+                "hierarchical: steps moving each upper-body group's blend towards the posture its candidates agree "
+                "on over the take, their geometric median (0 = the blend as regressed)"),
       StringOption("match", "lowpass", {"lowpass", "band"},
                    "matching signal: lowpass (sketch-filtered curves) or band (band-pass only)"),
       WithFlag(NumberOption("context_fraction", d.context_fraction, 0.0, false, 2.0, "",
@@ -152,6 +155,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.crossfade = o.Number("crossfade");
   options.local_ridge = o.Number("local_ridge");
   options.limb_reach = o.Number("limb_reach");
+  options.consensus_iterations = o.Int("consensus");
   options.root_drives = o.Bool("root_drives");
   options.synthesized_driver_weight = o.Number("synthesized_driver_weight");
   options.threads = o.Int("threads");

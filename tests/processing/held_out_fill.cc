@@ -1,0 +1,45 @@
+#include "tests/processing/held_out_fill.h"
+
+#include "formats/motion_io.h"
+#include "processing/evaluation/scenarios.h"
+#include "processing/evaluation/sketch_maker.h"
+#include "tests/support/test_paths.h"
+
+namespace mocapfill::testing {
+
+Result<std::vector<std::vector<FillMetrics>>> FillHeldOutTakes(FillEngine& engine, const MotionDatabase& db,
+                                                               const std::string& scenario,
+                                                               const std::vector<std::string>& takes,
+                                                               const std::vector<FillOptions>& variants) {
+  ASSIGN_OR_RETURN(const SketchScenario found, FindSketchScenario(scenario));
+  std::vector<std::vector<FillMetrics>> metrics;
+  for (const std::string& take : takes) {
+    ASSIGN_OR_RETURN(const Scene truth, ImportFile(DataPath("bandai-namco-1/data/dataset-1_" + take + ".bvh")));
+    ASSIGN_OR_RETURN(const MotionClip sketch, MakeSketch(db.skeleton(), truth.clips[0], found.sketch));
+    metrics.emplace_back();
+    for (const FillOptions& options : variants) {
+      ASSIGN_OR_RETURN(const FillResult filled, engine.Fill(sketch, options));
+      ASSIGN_OR_RETURN(const FillMetrics m, ScoreFill(db.skeleton(), truth.clips[0], sketch, filled.clip, db.root_joint()));
+      metrics.back().push_back(m);
+    }
+  }
+  return metrics;
+}
+
+Result<ProudSums> FillProudTakesByCategory(FillEngine& engine, const MotionDatabase& db,
+                                           const std::vector<FillOptions>& variants) {
+  const std::vector<std::string> locomotion = {"walk_proud_001", "run_proud_001", "walk-left_proud_001"};
+  const std::vector<std::string> gestures = {"bow_proud_001", "bye_proud_001", "byebye_proud_001", "guide_proud_001"};
+  std::vector<std::string> takes = locomotion;
+  takes.insert(takes.end(), gestures.begin(), gestures.end());
+  ASSIGN_OR_RETURN(const std::vector<std::vector<FillMetrics>> m, FillHeldOutTakes(engine, db, "legs8", takes, variants));
+  ProudSums sums{std::vector<double>(variants.size(), 0.0), std::vector<double>(variants.size(), 0.0), 0.0};
+  for (size_t t = 0; t < takes.size(); ++t)
+    for (size_t v = 0; v < variants.size(); ++v) {
+      (t < locomotion.size() ? sums.locomotion : sums.gestures)[v] += m[t][v].mpjpe_unkeyed_cm;
+      sums.key_error_max_deg = std::max(sums.key_error_max_deg, m[t][v].key_error_max_deg);
+    }
+  return sums;
+}
+
+}  // namespace mocapfill::testing
