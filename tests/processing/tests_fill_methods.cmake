@@ -1,5 +1,8 @@
 # Fill methods on the embedded default database and the shipped sketch.
+# The held-out evaluations (each fills every take of the corpus or database) are `slow`: under
+# the sanitizers they take minutes each, and the smaller fill tests run the same code there.
 mocapfill_add_test(fill_tests
+  SLOW [=[^(Fill\.SynthesisedLegsBlendFewerCandidates|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
   CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|SynthesisedJointsAreAboutAsSmoothAsTheCapture|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc ${CMAKE_CURRENT_LIST_DIR}/local_regression_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/limb_reach_test.cc ${CMAKE_CURRENT_LIST_DIR}/consensus_weights_test.cc
@@ -24,6 +27,7 @@ mocapfill_add_test(hybrid_loso_tests
 
 # Coverage of the sketch by the database: warnings and blending towards the mean pose.
 mocapfill_add_test(coverage_tests
+  SLOW [=[^Coverage\.DanceAgainstTheDefaultDatabaseWarnsAndIsNoWorseThanMean$]=]
   CORPUS [=[^Coverage\.(DanceAgainstTheDefaultDatabaseWarnsAndIsNoWorseThanMean|CapturedWalkOfAnotherStyleIsCovered)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/coverage_test.cc
   LIBS mocapfill_test_default_db mocapfill_sketch_fill mocapfill_evaluation mocapfill_fill mocapfill_synthesis
