@@ -9,6 +9,8 @@
 #   MOCAPFILL_TEST_EXCLUDE  ctest labels left out, as a regex (default "perf": machine-dependent
 #                           page-fault and timing checks; run them with `ctest -L perf`)
 #   MOCAPFILL_BUILD_TYPE    CMake build type (default Release)
+#   MOCAPFILL_BUILD_TARGET  what to build (default all; mocapfill_tests: the registered test
+#                           programs and what they link, with MOCAPFILL_TEST_FOLDERS)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
@@ -27,7 +29,7 @@ bash "$root/tools/install_deps.sh"
 step_done "install"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${MOCAPFILL_BUILD_TYPE:-Release}" \
   -DMOCAPFILL_WERROR=ON -DMOCAPFILL_UNITY_BUILD=ON "$@" >/dev/null
-cmake --build "$build" -j "$(nproc)"
+cmake --build "$build" -j "$(nproc)" --target "${MOCAPFILL_BUILD_TARGET:-all}"
 step_done "build"
 rm -rf "$build/test-output"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)" ${exclude:+--label-exclude "$exclude"}
