@@ -7,6 +7,10 @@
 
 namespace mocapfill {
 
+Eigen::Vector3d RestOffset(const Skeleton& skeleton, int joint) {
+  return skeleton.joint(skeleton.parent(joint)).rest_scale.cwiseProduct(skeleton.joint(joint).rest_translation);
+}
+
 void ComputeWorldPose(const Skeleton& skeleton, const MotionClip& clip, int frame, WorldPose& out) {
   const int n = skeleton.num_joints();
   out.positions.resize(n);

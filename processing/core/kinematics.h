@@ -16,6 +16,10 @@ struct WorldPose {
   std::vector<Eigen::Quaterniond> rotations;    // per joint
 };
 
+// A joint's offset from its parent in the rest pose as forward kinematics applies it: the
+// parent's rest scale times the joint's rest translation. `joint` must have a parent.
+Eigen::Vector3d RestOffset(const Skeleton& skeleton, int joint);
+
 // World transforms of every joint at one frame (parents before children, one loop).
 // Joint scale is applied to child offsets.
 void ComputeWorldPose(const Skeleton& skeleton, const MotionClip& clip, int frame, WorldPose& out);

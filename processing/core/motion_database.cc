@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "processing/core/rotation.h"
+
 namespace mocapfill {
 
 namespace {
@@ -59,6 +61,10 @@ Result<MotionDatabase> MotionDatabase::FromParts(Parts parts) {
         std::abs(e.lag_frames) > table.max_lag_frames)
       return InvalidData("correlation table holds an out-of-range entry");
   return MotionDatabase(std::move(parts));
+}
+
+Eigen::Quaterniond MotionDatabase::LocalRotation(int joint, const Eigen::Vector3d& channels) const {
+  return joint_means()[joint] * ExpMap(channels);
 }
 
 std::optional<int> MotionDatabase::FindClip(const std::string& name) const {

@@ -98,6 +98,9 @@ class MotionDatabase {
   std::string ChannelName(int channel) const;
 
   const Eigen::MatrixXf& signals() const { return parts_.signals; }
+  // A joint's local rotation from its three tangent channels (a row segment of signals() or of
+  // a synthesised signal): the joint's reference rotation times their exponential map.
+  Eigen::Quaterniond LocalRotation(int joint, const Eigen::Vector3d& channels) const;
   // Rows of one clip of a frames x channels matrix (signals() or a stored band's values).
   auto ClipRows(const Eigen::MatrixXf& m, int clip_index) const {
     return m.middleRows(parts_.clips[clip_index].first_frame, parts_.clips[clip_index].num_frames);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "processing/core/rotation.h"
+#include "processing/core/kinematics.h"
 
 namespace mocapfill {
 
@@ -13,30 +13,25 @@ Eigen::MatrixXf GroupPositions(const MotionDatabase& db, const std::vector<int>&
   std::vector<int> placed;
   for (int j = 0; j < skeleton.num_joints(); ++j)
     if (skeleton.parent(j) >= 0 && in_group(skeleton.parent(j))) placed.push_back(j);
-  // A joint's offset from its parent as forward kinematics applies it.
-  auto offset = [&](int j) {
-    return Eigen::Vector3d(skeleton.joint(skeleton.parent(j)).rest_scale.cwiseProduct(skeleton.joint(j).rest_translation));
-  };
   Eigen::MatrixXf table(db.num_frames(), 3 * placed.size());
   std::vector<Eigen::Quaterniond> rotation(skeleton.num_joints(), Eigen::Quaterniond::Identity());
   std::vector<Eigen::Vector3d> position(skeleton.num_joints(), Eigen::Vector3d::Zero());
   for (int f = 0; f < db.num_frames(); ++f) {
     for (size_t g = 0; g < group.size(); ++g) {
       const int j = group[g];
-      const Eigen::Quaterniond local =
-          db.joint_means()[j] * ExpMap(db.signals().row(f).segment<3>(3 * j).cast<double>().transpose());
+      const Eigen::Quaterniond local = db.LocalRotation(j, db.signals().row(f).segment<3>(3 * j).cast<double>());
       if (g == 0) {
         position[j].setZero();
         rotation[j] = local;
       } else {
         const int p = skeleton.parent(j);
-        position[j] = position[p] + rotation[p] * offset(j);
+        position[j] = position[p] + rotation[p] * RestOffset(skeleton, j);
         rotation[j] = rotation[p] * local;
       }
     }
     for (size_t k = 0; k < placed.size(); ++k) {
       const int j = placed[k], p = skeleton.parent(j);
-      table.row(f).segment<3>(3 * k) = (position[p] + rotation[p] * offset(j)).cast<float>().transpose();
+      table.row(f).segment<3>(3 * k) = (position[p] + rotation[p] * RestOffset(skeleton, j)).cast<float>().transpose();
     }
   }
   return table;

@@ -4,26 +4,14 @@
 #include <array>
 #include <cmath>
 
+#include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
 #include "processing/retargeting/rig_mapping.h"
 
 namespace mocapfill {
 
-namespace {
-
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
-
-// A joint's offset from its parent as forward kinematics applies it.
-Vector3d BoneOffset(const Skeleton& skeleton, int j) {
-  return skeleton.joint(skeleton.parent(j)).rest_scale.cwiseProduct(skeleton.joint(j).rest_translation);
-}
-
-Quaterniond LocalRotation(const MotionDatabase& db, int j, const Vector3d& channels) {
-  return db.joint_means()[j] * ExpMap(channels);
-}
-
-}  // namespace
 
 std::vector<Limb> ArmsOf(const Skeleton& skeleton) {
   Result<RigMapping> mapping = MapHumanoid(skeleton, {});
@@ -55,14 +43,14 @@ ArmReach PrepareArmReach(const MotionDatabase& db) {
   r.table.resize(signals.rows(), 3 * r.arms.size());
   for (size_t i = 0; i < r.arms.size(); ++i) {
     const Limb& arm = r.arms[i];
-    const Vector3d b1 = BoneOffset(s, arm.lower), b2 = BoneOffset(s, arm.end);
+    const Vector3d b1 = RestOffset(s, arm.lower), b2 = RestOffset(s, arm.end);
     // The elbow's axis: the bend plane's normal where the database bends the arm most (a
     // nearly straight arm shows no plane of its own).
     Vector3d hinge = Vector3d::UnitX();
     double most = 0.0;
     for (int f = 0; f < signals.rows(); ++f) {
-      const Quaterniond q1 = LocalRotation(db, arm.upper, signals.row(f).segment<3>(3 * arm.upper).cast<double>());
-      const Quaterniond q2 = LocalRotation(db, arm.lower, signals.row(f).segment<3>(3 * arm.lower).cast<double>());
+      const Quaterniond q1 = db.LocalRotation(arm.upper, signals.row(f).segment<3>(3 * arm.upper).cast<double>());
+      const Quaterniond q2 = db.LocalRotation(arm.lower, signals.row(f).segment<3>(3 * arm.lower).cast<double>());
       const Vector3d forearm = q2 * b2, n = b1.cross(forearm);
       if (n.norm() > most) {
         most = n.norm();
@@ -80,12 +68,12 @@ void ReachLimbs(const MotionDatabase& db, const ArmReach& prepared, const std::v
   const Skeleton& s = db.skeleton();
   for (int i : which) {
     const Limb& limb = prepared.arms[i];
-    const Vector3d upper_bone = BoneOffset(s, limb.lower), lower_bone = BoneOffset(s, limb.end);
+    const Vector3d upper_bone = RestOffset(s, limb.lower), lower_bone = RestOffset(s, limb.end);
     const double l1 = upper_bone.norm(), l2 = lower_bone.norm();
     if (l1 <= 0.0 || l2 <= 0.0) continue;
     for (int f = 0; f < out.rows(); ++f) {
-      const Quaterniond q1 = LocalRotation(db, limb.upper, out.row(f).segment<3>(3 * limb.upper).transpose());
-      const Quaterniond q2 = LocalRotation(db, limb.lower, out.row(f).segment<3>(3 * limb.lower).transpose());
+      const Quaterniond q1 = db.LocalRotation(limb.upper, out.row(f).segment<3>(3 * limb.upper).transpose());
+      const Quaterniond q2 = db.LocalRotation(limb.lower, out.row(f).segment<3>(3 * limb.lower).transpose());
       const Vector3d elbow = q1 * upper_bone, forearm = q1 * (q2 * lower_bone);
       const Vector3d tip = elbow + forearm;
       Vector3d target = tip + strength * (reach.row(f).segment<3>(3 * i).transpose() - tip);
