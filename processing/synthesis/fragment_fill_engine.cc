@@ -201,6 +201,23 @@ void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const F
   BlendTowards(prior, prior_weight.cwiseMax(texture_weight), keyed, out);
 }
 
+// Adds `gain` times the `bands` finest pyramid bands of `targets` as the group's lead candidates
+// alone give them (AssembleFragments with a blend of 1; frames without candidates keep the
+// blend's values, which have no detail to give) to `detail`: DropFinestBands takes those bands
+// off the blend, and a share of one take's come back.
+void AddLeadDetail(const FragmentContext& ctx, const GroupResult& r, const std::vector<int>& targets, int bands,
+                   double gain, const Eigen::MatrixXd& blended, Eigen::MatrixXd& detail) {
+  if (gain <= 0.0 || bands <= 0 || blended.rows() < 2) return;
+  AssemblyInputs lead{ctx.db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, 1, targets, ctx.options->crossfade};
+  Eigen::MatrixXd alone = blended;
+  AssembleFragments(lead, alone);
+  Eigen::MatrixXd block(alone.rows(), targets.size());
+  for (size_t i = 0; i < targets.size(); ++i) block.col(i) = alone.col(targets[i]);
+  Eigen::MatrixXd smooth = block;
+  for (int level = 0; level < bands; ++level) smooth = SmoothLevel(smooth, level, PyramidBoundary::kClamp);
+  for (size_t i = 0; i < targets.size(); ++i) detail.col(targets[i]) += gain * (block.col(i) - smooth.col(i));
+}
+
 // Leaves the `bands` finest pyramid bands out of the listed channels of `out` (replaces them by
 // G_bands): above 7.5 Hz at 30 Hz the blend of other takes carries the jolts of its own
 // candidates and cross-fades, not detail of the motion being filled.
@@ -274,6 +291,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   }
   const ArmReach* reaching = options.limb_reach > 0.0 ? arm_reach.get() : nullptr;
   const std::vector<DrivenChannel> all_keyed = AllKeyedDrivers(db, s, options);
+  Eigen::MatrixXd lead_detail = Eigen::MatrixXd::Zero(out.rows(), out.cols());
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
       const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, synthesized, options.blend, out, timer);
@@ -310,6 +328,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       const GroupResult r = SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets,
                                             blend, out, timer, positions);
       ReachLikeTheTakes(ctx, reaching, group.joints, r, blend, out);
+      if (!hanging[group.joints.back()] && blend > 1)
+        AddLeadDetail(ctx, r, targets, options.synthesized_finest_band, options.lead_detail, out, lead_detail);
       ReportGroup(ctx, group.name, r, blend, report);
       if (contacts) VoteContacts(ctx, *contacts, group.joints, r, blend, report);
       std::string drivers;
@@ -323,6 +343,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     }
   }
   DropFinestBands(synthesized, options.synthesized_finest_band, out);
+  out += lead_detail;
   if (options.texture) {
     std::vector<int> keyed_channels;
     for (int c = 0; c < 3 * db.num_joints(); ++c)

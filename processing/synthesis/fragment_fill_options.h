@@ -85,6 +85,10 @@ struct FragmentFillOptions {
   // consensus keep their weight.
   int consensus_iterations = 25;
   double consensus_floor_m = 0.05;
+  // Hierarchical: the upper-body groups get back this share of their lead candidate's finest
+  // bands (those synthesized_finest_band takes off the blend): the average of many takes cancels
+  // their detail (its jerk was 0.54 - 0.67 of the capture's), one take has it; 0: none.
+  double lead_detail = 0.7;
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching

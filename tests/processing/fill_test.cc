@@ -15,6 +15,7 @@
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/sketch_signals.h"
 #include "processing/texturing/texture_channels.h"
+#include "tests/processing/held_out_fill.h"
 #include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
@@ -55,6 +56,11 @@ TEST(FillOptions, ValidateRejectsEveryOutOfRangeField) {
   EXPECT_FALSE(o.Validate().ok());
   o = {};
   o.synthesized_finest_band = -1;
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
+  o.lead_detail = -0.1;
+  EXPECT_FALSE(o.Validate().ok());
+  o.lead_detail = 2.5;
   EXPECT_FALSE(o.Validate().ok());
   EXPECT_EQ(*ParseFillMethod("nn"), FillMethod::kNearest);
   EXPECT_EQ(*ParseJoinCriterion("best-animation"), JoinCriterion::kBestAnimation);
@@ -345,6 +351,7 @@ TEST(Fill, SynthesisedJointsAreAboutAsSmoothAsTheCapture) {
   for (int finest : {0, 1}) {
     FillOptions options;
     options.synthesized_finest_band = finest;
+    options.lead_detail = 0.0;  // the blend's own finest band, kept or left out
     Result<FillResult> r = engine.Fill(sketch, options);
     ASSERT_TRUE(r.ok());
     ratio[finest] = UnkeyedJerk(sketch, r->clip) / captured;
@@ -358,6 +365,41 @@ TEST(Fill, SynthesisedJointsAreAboutAsSmoothAsTheCapture) {
   EXPECT_LT(ratio[1], 0.98 * ratio[0]);
   EXPECT_LT(ratio[1], 1.3);  // issue 15's limit for the jitter ratio
   EXPECT_LT(mpjpe[1], mpjpe[0] + 0.05);
+}
+
+// The blend of 128 takes averages their detail away (the upper body's jerk was 0.54 - 0.67 of
+// the capture's on the tuning half); its lead take's finest band, put back at lead_detail,
+// lifts the jitter ratio into issue 15's [0.8, 1.3] without moving the pose. Held-out takes: against a
+// database with their own style the blend is about as jerky as the capture already.
+TEST(Fill, LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const MotionDatabase& db = testing::BandaiDbWithout("proud");
+  FillEngine engine(db);
+  std::vector<FillOptions> variants(2);
+  variants[0].lead_detail = 0.0;
+  const std::vector<std::string> takes = {"walk_proud_001", "run_proud_001", "bow_proud_001", "bye_proud_001",
+                                          "guide_proud_001"};
+  for (const char* scenario : {"legs8", "root"}) {
+    Result<std::vector<std::vector<FillMetrics>>> m = testing::FillHeldOutTakes(engine, db, scenario, takes, variants);
+    ASSERT_TRUE(m.ok()) << m.status().message();
+    std::vector<double> jitter(2, 0.0), mpjpe(2, 0.0);
+    double key_error = 0.0;
+    for (const std::vector<FillMetrics>& take : *m)
+      for (size_t v = 0; v < 2; ++v) {
+        jitter[v] += take[v].jitter_ratio / takes.size();
+        mpjpe[v] += take[v].mpjpe_unkeyed_cm;
+        key_error = std::max(key_error, take[v].key_error_max_deg);
+      }
+    std::printf("%s: jitter ratio %.3f without the lead's detail, %.3f with %.1f of it; MPJPE summed %.3f / %.3f cm\n",
+                scenario, jitter[0], jitter[1], variants[1].lead_detail, mpjpe[0], mpjpe[1]);
+    EXPECT_GT(variants[1].lead_detail, 0.0);
+    // Measured: legs8 0.621 -> 0.908, root 0.839 -> 1.157; MPJPE 32.642 -> 32.656, 39.652 -> 39.680.
+    EXPECT_GT(jitter[1], jitter[0] + 0.1) << scenario;
+    EXPECT_GE(jitter[1], 0.8) << scenario;  // issue 15's range for the jitter ratio
+    EXPECT_LE(jitter[1], 1.3) << scenario;
+    EXPECT_LT(mpjpe[1], 1.005 * mpjpe[0]) << scenario;
+    EXPECT_LT(key_error, 0.01) << scenario;
+  }
 }
 
 // With the legs synthesised (the upper-body scenario: hips, torso, head and arms keyed every 8

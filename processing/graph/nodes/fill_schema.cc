@@ -54,6 +54,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
       IntOption("consensus", d.consensus_iterations, 0, 100,
                 "hierarchical: steps moving each upper-body group's blend towards the posture its candidates agree "
                 "on over the take, their geometric median (0 = the blend as regressed)"),
+      NumberOption("lead_detail", d.lead_detail, 0.0, false, 2.0, "",
+                   "hierarchical: share of the joined take's finest detail put back into each upper-body group's "
+                   "blend, which averages it away (0 = the blend's smooth curves)"),
       StringOption("match", "lowpass", {"lowpass", "band"},
                    "matching signal: lowpass (sketch-filtered curves) or band (band-pass only)"),
       WithFlag(NumberOption("context_fraction", d.context_fraction, 0.0, false, 2.0, "",
@@ -156,6 +159,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.local_ridge = o.Number("local_ridge");
   options.limb_reach = o.Number("limb_reach");
   options.consensus_iterations = o.Int("consensus");
+  options.lead_detail = o.Number("lead_detail");
   options.root_drives = o.Bool("root_drives");
   options.synthesized_driver_weight = o.Number("synthesized_driver_weight");
   options.threads = o.Int("threads");
