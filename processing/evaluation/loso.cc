@@ -62,7 +62,7 @@ Status ScoreClips(const std::vector<LabeledClip>& clips, const std::vector<int>&
       Result<FillResult> filled = engine.Fill(sketch, method.options);
       if (filled.ok() && options.plant_feet) {
         std::vector<LegForPlanting> planted = legs;
-        GiveSynthesizedContacts(filled->report, filled->clip, *mapping, filled->clip, planted);
+        GiveSynthesizedContacts(filled->report, db.skeleton(), filled->clip, *mapping, filled->clip, planted);
         PlantFeet(db.skeleton(), planted, options.feet, filled->clip);
       }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -15,8 +15,10 @@ namespace mocapfill {
 
 // Gives every leg whose foot (or toe) the fill synthesised the fill's contacts of that joint, at
 // the frames of `planted` (the clip about to be planted, on any rig; its times in the time base
-// of `fill`, the fill's own clip on the database's rig, whose humanoid mapping is `db_mapping`).
-void GiveSynthesizedContacts(const FragmentFillReport& report, const MotionClip& fill, const RigMapping& db_mapping,
-                             const MotionClip& planted, std::vector<LegForPlanting>& legs);
+// of `fill`, the fill's own clip on the database's skeleton `db_skeleton`, whose humanoid
+// mapping is `db_mapping`), with the foot kept flat where only the heel's vote wavers, and how
+// far the database's ground lies above the fill's feet over those contacts.
+void GiveSynthesizedContacts(const FragmentFillReport& report, const Skeleton& db_skeleton, const MotionClip& fill,
+                             const RigMapping& db_mapping, const MotionClip& planted, std::vector<LegForPlanting>& legs);
 
 }  // namespace mocapfill

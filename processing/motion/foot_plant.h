@@ -38,6 +38,9 @@ struct LegForPlanting {
   // Contacts known beforehand, one flag per frame of the planted clip (the matched database
   // takes' own, for a synthesised leg); empty: found on the motion (foot_contacts.h).
   std::vector<bool> heel_down, toe_down;
+  // With given contacts: how far above the median height of the leg's own foot (toe) over
+  // them the ground lies. A blend of takes' legs stands lower or higher than the takes did.
+  double heel_ground_shift_m = 0.0, toe_ground_shift_m = 0.0;
 };
 
 struct FootPlantOptions {

@@ -354,7 +354,13 @@ Result<SketchFillResult> FillSketch(const Scene& sketch, const MotionDatabase& d
     for (LegForPlanting& leg : legs)
       for (const PositionTarget& t : targets)
         if (t.joint == leg.chain.end || t.joint == leg.toe) leg.pinned_times_s.push_back(t.time_s);
-    GiveSynthesizedContacts(filled.report, filled.clip, db_rig.mapping, out, legs);
+    GiveSynthesizedContacts(filled.report, db.skeleton(), filled.clip, db_rig.mapping, out, legs);
+    // Heights scale between the rigs as the hips' translation does.
+    const double scale = sketch_rig.rig.hip_height_m() / db_rig.rig.hip_height_m();
+    for (LegForPlanting& leg : legs) {
+      leg.heel_ground_shift_m *= scale;
+      leg.toe_ground_shift_m *= scale;
+    }
     result.feet = PlantFeet(sketch.skeleton, legs, options.feet, out);
   }
   out.MakeContinuous();

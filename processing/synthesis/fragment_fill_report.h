@@ -63,6 +63,7 @@ struct SynthesizedContacts {
   std::string joint;
   int joint_index = -1;  // in the database's skeleton
   std::vector<FrameRun> runs;
+  double ground_height_m = 0.0;  // where the database's takes stand this joint (world up, metres)
 };
 
 struct JointFillInfo {

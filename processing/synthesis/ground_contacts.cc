@@ -29,6 +29,7 @@ Result<DatabaseContacts> FindDatabaseContacts(const MotionDatabase& db, const st
   for (int j = 0; j < db.num_joints(); ++j)
     if (j < static_cast<int>(eligible.size()) && eligible[j]) joints.push_back(j);
   Eigen::MatrixXf down = Eigen::MatrixXf::Zero(db.num_frames(), joints.size());
+  std::vector<std::vector<double>> heights(joints.size());
   const ContactDetection detection = CaptureDetection();
   const int nj = db.num_joints();
   for (int c = 0; c < db.num_clips(); ++c) {
@@ -44,7 +45,10 @@ Result<DatabaseContacts> FindDatabaseContacts(const MotionDatabase& db, const st
         floor = std::min(floor, track[f].y());
       }
       const std::vector<bool> standing = DetectContacts(track, times, floor, detection);
-      for (int f = 0; f < clip.num_frames; ++f) down(db.clip(c).first_frame + f, k) = standing[f] ? 1.0f : 0.0f;
+      for (int f = 0; f < clip.num_frames; ++f) {
+        down(db.clip(c).first_frame + f, k) = standing[f] ? 1.0f : 0.0f;
+        if (standing[f]) heights[k].push_back(track[f].y());
+      }
     }
   }
   // Joints that hardly ever stand (knees of the few kneeling takes) are not planted.
@@ -56,6 +60,9 @@ Result<DatabaseContacts> FindDatabaseContacts(const MotionDatabase& db, const st
   for (size_t i = 0; i < kept.size(); ++i) {
     out.joints.push_back(joints[kept[i]]);
     out.down.col(i) = down.col(kept[i]);
+    std::vector<double>& h = heights[kept[i]];
+    std::nth_element(h.begin(), h.begin() + h.size() / 2, h.end());
+    out.standing_height_m.push_back(h[h.size() / 2]);
   }
   return out;
 }
@@ -70,7 +77,7 @@ std::vector<SynthesizedContacts> VotedContacts(const MotionDatabase& db, const D
     std::vector<bool> standing(frames);
     for (int f = 0; f < frames; ++f) standing[f] = votes(f, k) >= 0.5;
     TidyContacts(times, CaptureDetection(), standing);
-    SynthesizedContacts c{db.skeleton().name(contacts.joints[k]), contacts.joints[k], {}};
+    SynthesizedContacts c{db.skeleton().name(contacts.joints[k]), contacts.joints[k], {}, contacts.standing_height_m[k]};
     for (const auto& [first, last] : ContactRuns(standing)) c.runs.push_back({first, last});
     out.push_back(std::move(c));
   }

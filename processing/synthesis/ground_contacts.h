@@ -19,11 +19,15 @@ namespace mocapfill {
 struct DatabaseContacts {
   std::vector<int> joints;  // database joints that stand on the ground in some take
   Eigen::MatrixXf down;     // database frames x joints: 1 where the joint stands, else 0
+  // Per joint: its median height (world up) over the frames it stands on, the ground of the
+  // database's takes as that joint meets it.
+  std::vector<double> standing_height_m;
 };
 
 // Contacts of the `eligible` joints (flags per database joint) on every clip of `db`, found on
 // the captured motion (foot_contacts.h with capture's thresholds; the floor is each joint's
-// lowest height in its clip). Joints standing on fewer than 2 % of the frames are left out.
+// lowest height in its clip), and their standing heights. Joints standing on fewer than 2 % of
+// the frames are left out.
 Result<DatabaseContacts> FindDatabaseContacts(const MotionDatabase& db, const std::vector<std::uint8_t>& eligible);
 
 // The contacts of the joints in `columns` (of contacts.down) at the fill's frames, from `votes`

@@ -12,9 +12,12 @@
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/scenarios.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "processing/database/stored_clips.h"
+#include "processing/fill/synthesized_contacts.h"
 #include "processing/motion/foot_contacts.h"
 #include "processing/motion/foot_plant.h"
 #include "processing/motion/key_fidelity.h"
+#include "processing/retargeting/rig_mapping.h"
 #include "processing/sketch_fill/sketch_fill.h"
 #include "processing/synthesis/ground_contacts.h"
 #include "tests/support/default_db.h"
@@ -315,14 +318,107 @@ TEST(FootPlant, SynthesisedFeetStandWhereTheTakesStood) {
               "floor %.2f cm planted, %.2f cm free\n",
               100.0 * agree_voted / total, 100.0 * agree_found / total, held->foot_skate_cm_per_s,
               slid->foot_skate_cm_per_s, held->penetration_max_cm, slid->penetration_max_cm);
-  // Measured: voted 94.4 %, found 88.7 %; skating 0.3 cm/s planted, 26.4 free; deepest 0.10 cm
-  // planted (the feet stand on the median height of their contacts), 2.68 free.
+  // Measured: voted 94.4 %, found 89.9 %; skating 0.5 cm/s planted, 26.8 free; deepest 0.00 cm
+  // planted (the feet stand on the takes' ground; 0.01 on the median height of their own
+  // contacts), 3.35 free.
   EXPECT_GT(agree_voted, 0.9 * total);
   EXPECT_GT(agree_voted, agree_found + 0.03 * total);
   EXPECT_LT(held->foot_skate_cm_per_s, 5.0);  // issue 15's limit
   EXPECT_GT(slid->foot_skate_cm_per_s, 15.0);  // the free legs do slide: the test can fail
   EXPECT_LT(held->penetration_max_cm, 1.0);  // issue 15's limit
   EXPECT_GT(slid->penetration_max_cm, 2.0);  // the free legs do sink
+}
+
+// Contacts of a synthesised foot as the fill reports them, for a default-database walk standing
+// in for the fill's own clip: the left heel (Foot_L) and toe (Toes_L) with the given runs.
+struct VotedLeftFoot {
+  MotionClip fill;
+  RigMapping mapping;
+  FragmentFillReport report;
+  std::vector<LegForPlanting> legs;
+};
+
+VotedLeftFoot VoteLeftFoot(const std::vector<FrameRun>& heel, const std::vector<FrameRun>& toe, double ground_m) {
+  const MotionDatabase& db = testing::DefaultDb();
+  VotedLeftFoot out;
+  out.fill = *ReconstructClip(db, 0);
+  out.mapping = *MapHumanoid(db.skeleton(), {});
+  const Skeleton& s = db.skeleton();
+  out.report.contacts.push_back({"Foot_L", *s.Find("Foot_L"), heel, ground_m});
+  out.report.contacts.push_back({"Toes_L", *s.Find("Toes_L"), toe, ground_m});
+  MotionClip sketch = out.fill;
+  out.legs = LegsToPlant(out.mapping, sketch);
+  return out;
+}
+
+const LegForPlanting& LeftLeg(const std::vector<LegForPlanting>& legs) {
+  for (const LegForPlanting& leg : legs)
+    if (leg.side == "left") return leg;
+  throw std::runtime_error("no left leg");
+}
+
+// A heel the blended takes lift and put down again while the toe stands throughout (a bow, a
+// shift of weight) stays down: the synthesised foot stays flat. Where the toe lifts too, the
+// foot steps and its heel is left as voted.
+TEST(SynthesizedContacts, FootStaysFlatWhileOnlyTheHeelsVoteWavers) {
+  VotedLeftFoot flat = VoteLeftFoot({{0, 9}, {20, 39}}, {{0, 39}}, 0.0);
+  GiveSynthesizedContacts(flat.report, testing::DefaultDb().skeleton(), flat.fill, flat.mapping, flat.fill, flat.legs);
+  const LegForPlanting& standing = LeftLeg(flat.legs);
+  ASSERT_EQ(static_cast<int>(standing.heel_down.size()), flat.fill.num_frames);
+  for (int f = 0; f < flat.fill.num_frames; ++f) EXPECT_EQ(standing.heel_down[f], f <= 39) << "frame " << f;
+
+  VotedLeftFoot step = VoteLeftFoot({{0, 9}, {20, 39}}, {{0, 12}, {17, 39}}, 0.0);
+  GiveSynthesizedContacts(step.report, testing::DefaultDb().skeleton(), step.fill, step.mapping, step.fill, step.legs);
+  const LegForPlanting& stepping = LeftLeg(step.legs);
+  for (int f = 0; f < step.fill.num_frames; ++f)
+    EXPECT_EQ(stepping.heel_down[f], f <= 9 || (f >= 20 && f <= 39)) << "frame " << f;
+}
+
+// The planter is told how far the takes' ground lies above the fill's own foot over its
+// contacts (their median height), up to 10 cm; beyond, the sketch stands on a ground of its own.
+TEST(SynthesizedContacts, FeetAreMovedOntoTheTakesGround) {
+  const MotionDatabase& db = testing::DefaultDb();
+  const std::vector<FrameRun> runs{{0, 39}};
+  VotedLeftFoot probe = VoteLeftFoot(runs, runs, 0.0);
+  const std::vector<Eigen::Vector3d> track = TrackOf(db.skeleton(), probe.fill, *db.skeleton().Find("Foot_L"));
+  std::vector<double> heights;
+  for (int f = 0; f <= 39; ++f) heights.push_back(track[f].y());
+  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
+  const double median = heights[heights.size() / 2];
+  for (const auto& [ground, shift] : {std::pair{median + 0.03, 0.03}, {median - 0.02, -0.02}, {median + 0.5, 0.0}}) {
+    VotedLeftFoot v = VoteLeftFoot(runs, runs, ground);
+    GiveSynthesizedContacts(v.report, db.skeleton(), v.fill, v.mapping, v.fill, v.legs);
+    EXPECT_NEAR(LeftLeg(v.legs).heel_ground_shift_m, shift, 1e-9) << "ground " << ground;
+  }
+}
+
+// A bow held out of the corpus, filled from its upper body (the upper-body scenario): the
+// synthesised feet stand still and on the ground. The matched takes disagree about the heels
+// there; before the feet were kept flat while the toes stood, the held heels were let go and
+// caught again, and the feet, 20 - 30 cm from where the blend put them, jumped; they also
+// stood on the blend's median height, below the floor. Measured with this database (every
+// other style): jitter ratio 0.79, deepest 0.02 cm; before, 1.28 and 1.48 cm (3.84 and 1.98 cm
+// on the tuning half's fold, whose database holds 7 styles).
+TEST(FootPlant, StandingSynthesisedFeetStayStillAndOnTheGround) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<Scene> truth = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_bow_feminine_001.bvh"));
+  ASSERT_TRUE(truth.ok());
+  Result<SketchScenario> scenario = FindSketchScenario("upper-body");
+  ASSERT_TRUE(scenario.ok());
+  const MotionDatabase& db = testing::BandaiDbWithout("feminine");
+  Result<MotionClip> clip = MakeSketch(db.skeleton(), truth->clips[0], scenario->sketch);
+  ASSERT_TRUE(clip.ok()) << clip.status().message();
+  Result<SketchFillResult> filled = FillSketch(Scene{truth->skeleton, {*clip}, {}, {}, {}, {}}, db, {});
+  ASSERT_TRUE(filled.ok()) << filled.status().message();
+  Result<FillMetrics> m = ScoreFill(truth->skeleton, truth->clips[0], *clip, filled->scene.clips[0], db.root_joint());
+  ASSERT_TRUE(m.ok());
+  std::printf("bow, legs synthesised: jitter ratio %.3f, skating during true contacts %.2f cm/s, deepest below "
+              "the capture's floor %.2f cm, unkeyed joints %.2f cm\n",
+              m->jitter_ratio, m->foot_skate_cm_per_s, m->penetration_max_cm, m->mpjpe_unkeyed_cm);
+  EXPECT_LT(filled->key_error_max_deg, kPlantedKeysToleranceDeg);
+  EXPECT_LT(m->jitter_ratio, 1.1);
+  EXPECT_LT(m->foot_skate_cm_per_s, 5.0);   // issue 15's limit
+  EXPECT_LT(m->penetration_max_cm, 1.0);    // issue 15's limit
 }
 
 // Per side (left, right) and frame: whether the leg (hip to ankle) reaches into the last 5 %
