@@ -1,7 +1,8 @@
 // Planting synthesised feet where the matched takes stood. The fill votes the database takes'
 // own foot contacts for the feet it synthesises (synthesis/ground_contacts.h) and reports them
 // at its frames; the planter (motion/foot_plant.h) finds contacts on keyed feet itself, but on
-// a blend of takes it would hold the foot wherever the blend happens to slow down.
+// a blend of takes it would hold the foot wherever the blend happens to slow down. Keyed feet
+// get their texture's take's contacts too, which the planter adds to those it finds.
 #pragma once
 
 #include <vector>
@@ -13,7 +14,7 @@
 
 namespace mocapfill {
 
-// Gives every leg whose foot (or toe) the fill synthesised the fill's contacts of that joint, at
+// Gives every leg whose foot (or toe) the fill reports contacts for those contacts, at
 // the frames of `planted` (the clip about to be planted, on any rig; its times in the time base
 // of `fill`, the fill's own clip on the database's skeleton `db_skeleton`, whose humanoid
 // mapping is `db_mapping`), with the foot kept flat where only the heel's vote wavers, and how

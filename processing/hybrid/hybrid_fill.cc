@@ -51,6 +51,7 @@ void TakeFragmentReport(const FragmentFillReport& from, FragmentFillReport& to) 
   to.seams = from.seams;
   to.fragments = from.fragments;
   to.group_order = from.group_order;
+  to.contacts = from.contacts;  // the feet stand where the fragments' takes stood
   for (const StageTime& t : from.stages) to.stages.push_back({"fragments." + t.stage, t.seconds});
 }
 

@@ -84,6 +84,24 @@ struct JointContacts {
   std::vector<Vector3d> anchor;  // per frame, where down
 };
 
+bool HasKeys(const std::vector<bool>& pinned) { return std::find(pinned.begin(), pinned.end(), true) != pinned.end(); }
+
+// The takes' vote cannot hold a keyed foot between two keys that have it move faster than a
+// standing foot does (capture's 0.3 m/s): the animator's keys overrule the takes there.
+void DropVotesTheKeysDeny(const std::vector<Vector3d>& track, const std::vector<double>& times,
+                          const std::vector<bool>& pinned, double standing_speed, std::vector<bool>& voted) {
+  int previous = -1;
+  for (int f = 0; f < static_cast<int>(track.size()); ++f) {
+    if (!pinned[f]) continue;
+    if (previous >= 0) {
+      const Vector3d d = track[f] - track[previous];
+      if (std::hypot(d.x(), d.z()) > standing_speed * (times[f] - times[previous]))
+        std::fill(voted.begin() + previous + 1, voted.begin() + f, false);
+    }
+    previous = f;
+  }
+}
+
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
                            const std::vector<bool>& pinned, const std::vector<bool>& given,
                            const FootPlantOptions& options, const std::string& side, const std::string& part,
@@ -91,8 +109,13 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
   std::vector<double> times(clip.num_frames);
   for (int f = 0; f < clip.num_frames; ++f) times[f] = clip.time_s(f);
   const bool is_given = given.size() == track.size();
-  JointContacts out{is_given ? given : DetectContacts(track, times, FloorOf(track, pinned), options.detection, &hips),
+  const bool keyed = HasKeys(pinned);
+  std::vector<bool> voted = is_given ? given : std::vector<bool>(track.size(), false);
+  if (is_given && keyed) DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, voted);
+  JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, FloorOf(track, pinned), options.detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
+  if (is_given && keyed)
+    for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || voted[f];
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
     double farthest = 0.0;
@@ -102,16 +125,18 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     }
     // A foot this far from where it would be held is not standing (a swing foot passing low
     // and slow near a key): holding it would drag the leg and pop where the hold ends.
-    const double limit = is_given        ? options.max_given_correction_m
-                         : part == "toe" ? options.max_toe_correction_m
-                                         : options.max_correction_m;
+    const double limit = is_given && keyed ? options.max_keyed_given_correction_m
+                         : is_given        ? options.max_given_correction_m
+                         : part == "toe"   ? options.max_toe_correction_m
+                                           : options.max_correction_m;
     if (farthest > limit) {
       std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
       ++report.contacts_skipped;
       continue;
     }
     std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
-    FootContact c{side, part, times[first], times[last], 0, 0.0, is_given ? "takes" : "fill"};
+    const bool from_takes = std::find(voted.begin() + first, voted.begin() + last + 1, true) != voted.begin() + last + 1;
+    FootContact c{side, part, times[first], times[last], 0, 0.0, from_takes ? "takes" : "fill"};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
     report.contacts.push_back(c);
   }
@@ -224,9 +249,11 @@ void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, co
                     std::vector<Correction>& corrections) {
   double heel_floor = FloorOf(tracks.ankle, pinned);
   double toe_floor = tracks.toe.empty() ? -INFINITY : FloorOf(tracks.toe, pinned);
-  if (leg.heel_down.size() == tracks.ankle.size())
+  // A keyed leg stands where its keys put it: their lowest heights are its floor.
+  const bool keyed_leg = HasKeys(pinned);
+  if (!keyed_leg && leg.heel_down.size() == tracks.ankle.size())
     heel_floor = std::max(heel_floor, StandingHeight(tracks.ankle, leg.heel_down) + leg.heel_ground_shift_m);
-  if (!tracks.toe.empty() && leg.toe_down.size() == tracks.toe.size())
+  if (!keyed_leg && !tracks.toe.empty() && leg.toe_down.size() == tracks.toe.size())
     toe_floor = std::max(toe_floor, StandingHeight(tracks.toe, leg.toe_down) + leg.toe_ground_shift_m);
   for (size_t f = 0; f < corrections.size(); ++f) {
     if (pinned[f]) continue;

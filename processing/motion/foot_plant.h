@@ -36,7 +36,8 @@ struct LegForPlanting {
   // be zero there.
   std::vector<double> pinned_times_s;
   // Contacts known beforehand, one flag per frame of the planted clip (the matched database
-  // takes' own, for a synthesised leg); empty: found on the motion (foot_contacts.h).
+  // takes' own: for a synthesised leg, in place of those found on the motion (foot_contacts.h);
+  // for a keyed one, in addition to them where its keys allow); empty: found on the motion.
   std::vector<bool> heel_down, toe_down;
   // With given contacts: how far above the median height of the leg's own foot (toe) over
   // them the ground lies. A blend of takes' legs stands lower or higher than the takes did.
@@ -54,6 +55,11 @@ struct FootPlantOptions {
   // stands, but the takes' strides differ from the keyed root's travel: they are held up to
   // this far.
   double max_given_correction_m = 0.4;
+  // On a keyed leg the given contacts join those found on the motion, held up to this far (a
+  // keyed leg's own stride is the animator's); between two keys that move the foot faster than
+  // `keyed_standing_speed_m_per_s` (capture's standing limit) they do not hold it.
+  double max_keyed_given_correction_m = 0.2;
+  double keyed_standing_speed_m_per_s = 0.3;
   // Corrections that stretch the leg into the last this share of its length approach full
   // length smoothly rather than snapping the knee straight (0: plain two-bone IK).
   double soft_reach = 0.05;

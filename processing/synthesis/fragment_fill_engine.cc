@@ -280,7 +280,11 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   std::vector<int> synthesized = JointChannels(joints);
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
   const std::vector<std::uint8_t> hanging = HangingJoints(db);
-  if (!contacts && std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; })) {
+  // Keyed legs are planted on their textured take's contacts too (VoteContacts below).
+  bool keyed_legs_textured = false;
+  for (int j = 0; j < db.num_joints(); ++j) keyed_legs_textured |= options.texture && s.keyed[3 * j] && hanging[j];
+  if (!contacts && (keyed_legs_textured ||
+                    std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; }))) {
     ASSIGN_OR_RETURN(DatabaseContacts found, FindDatabaseContacts(db, hanging));
     contacts = std::make_unique<DatabaseContacts>(std::move(found));
     timer.Mark("db_contacts");
@@ -360,6 +364,15 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       for (int f : {kRootForward, kRootLateral}) root_channels.push_back(db.RootFeatureChannel(f));
     Eigen::MatrixXd source = out;
     const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, keyed_channels, 1, source, timer);
+    if (keyed_legs_textured && contacts) {
+      // The keyed feet stand where the take lending them its detail stood: keys sparser than
+      // a step (every 8 or 16 frames) miss much of each contact, and the feet slid there
+      // (legs16: 18 cm/s during the capture's contacts on the tuning half).
+      std::vector<int> keyed_hanging;
+      for (int j = 0; j < db.num_joints(); ++j)
+        if (s.keyed[3 * j] && hanging[j]) keyed_hanging.push_back(j);
+      VoteContacts(ctx, *contacts, keyed_hanging, r, 1, report);
+    }
     if (!root_channels.empty()) {
       // From the same takes as the joints' texture, so that hips and legs move together.
       AssemblyInputs lead{&db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, 1, root_channels, options.crossfade};

@@ -53,7 +53,8 @@ struct CoverageReport {
 };
 
 // Ground contacts of one synthesised joint (a foot or toe), voted from the matched takes'
-// own contacts (ground_contacts.h); the planter holds the joint over them.
+// own contacts (ground_contacts.h), or of a textured keyed one, its texture's take's; the
+// planter holds the joint over them.
 struct FrameRun {
   int first_frame = 0;  // fill frames [first_frame, last_frame]
   int last_frame = 0;
@@ -98,7 +99,9 @@ struct FragmentFillReport {
   std::vector<StageTime> stages;
   std::vector<std::string> group_order;  // hierarchical: groups in synthesis order with drivers
   CoverageReport coverage;
-  std::vector<SynthesizedContacts> contacts;  // every synthesised joint that stands in the database
+  // Every synthesised joint that stands in the database, and every keyed one (the legs) that
+  // stands in its texture's take.
+  std::vector<SynthesizedContacts> contacts;
 };
 
 }  // namespace mocapfill
