@@ -57,15 +57,24 @@ void KeepFlatWhileTheToeStands(std::vector<bool>& heel_down, const std::vector<b
 }
 
 // How far the database's ground for the joint lies above the fill's own median height of the
-// joint over its contacts (0 when beyond kMaxGroundShiftM or without contacts).
+// joint over its contacts, or above its lowest height when it has none (0 when beyond
+// kMaxGroundShiftM). The planter measures the same on the clip it plants (foot_plant.h).
 double GroundShift(const std::vector<Eigen::Vector3d>& positions, int num_joints, int joint,
                    const std::vector<bool>& down, double ground_m) {
   std::vector<double> heights;
-  for (size_t f = 0; f < down.size(); ++f)
-    if (down[f]) heights.push_back(positions[f * num_joints + joint].y());
-  if (heights.empty()) return 0.0;
-  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
-  const double shift = ground_m - heights[heights.size() / 2];
+  double lowest = INFINITY;
+  for (size_t f = 0; f < down.size(); ++f) {
+    const double y = positions[f * num_joints + joint].y();
+    lowest = std::min(lowest, y);
+    if (down[f]) heights.push_back(y);
+  }
+  if (!std::isfinite(lowest)) return 0.0;
+  double own = lowest;
+  if (!heights.empty()) {
+    std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
+    own = heights[heights.size() / 2];
+  }
+  const double shift = ground_m - own;
   return std::abs(shift) <= kMaxGroundShiftM ? shift : 0.0;
 }
 

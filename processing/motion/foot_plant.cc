@@ -239,6 +239,13 @@ double StandingHeight(const std::vector<Vector3d>& track, const std::vector<bool
   return heights[heights.size() / 2];
 }
 
+// The floor of a joint given its contacts: the median height over them, or its lowest height
+// (`lowest`) if the vote never has it stand (a short dash), moved by `shift` onto the ground.
+double GivenFloor(const std::vector<Vector3d>& track, const std::vector<bool>& down, double lowest, double shift) {
+  const double standing = StandingHeight(track, down);
+  return std::isfinite(standing) ? std::max(lowest, standing + shift) : lowest + shift;
+}
+
 // Between keys the slerped legs and the linearly interpolated root can sink a foot below the
 // ground the keys stand on: every frame's foot (after the holds) is lifted back onto the
 // floor of its heel and toe (their lowest heights at the keys); keys are on or above it. A
@@ -252,9 +259,9 @@ void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, co
   // A keyed leg stands where its keys put it: their lowest heights are its floor.
   const bool keyed_leg = HasKeys(pinned);
   if (!keyed_leg && leg.heel_down.size() == tracks.ankle.size())
-    heel_floor = std::max(heel_floor, StandingHeight(tracks.ankle, leg.heel_down) + leg.heel_ground_shift_m);
+    heel_floor = GivenFloor(tracks.ankle, leg.heel_down, heel_floor, leg.heel_ground_shift_m);
   if (!keyed_leg && !tracks.toe.empty() && leg.toe_down.size() == tracks.toe.size())
-    toe_floor = std::max(toe_floor, StandingHeight(tracks.toe, leg.toe_down) + leg.toe_ground_shift_m);
+    toe_floor = GivenFloor(tracks.toe, leg.toe_down, toe_floor, leg.toe_ground_shift_m);
   for (size_t f = 0; f < corrections.size(); ++f) {
     if (pinned[f]) continue;
     Correction& c = corrections[f];

@@ -40,7 +40,8 @@ struct LegForPlanting {
   // for a keyed one, in addition to them where its keys allow); empty: found on the motion.
   std::vector<bool> heel_down, toe_down;
   // With given contacts: how far above the median height of the leg's own foot (toe) over
-  // them the ground lies. A blend of takes' legs stands lower or higher than the takes did.
+  // them (its lowest height if it never stands) the ground lies. A blend of takes' legs stands
+  // lower or higher than the takes did.
   double heel_ground_shift_m = 0.0, toe_ground_shift_m = 0.0;
 };
 

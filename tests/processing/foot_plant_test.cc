@@ -390,7 +390,8 @@ TEST(SynthesizedContacts, FootStaysFlatWhileOnlyTheHeelsVoteWavers) {
 }
 
 // The planter is told how far the takes' ground lies above the fill's own foot over its
-// contacts (their median height), up to 10 cm; beyond, the sketch stands on a ground of its own.
+// contacts (their median height; its lowest height without contacts), up to 10 cm; beyond, the
+// sketch stands on a ground of its own.
 TEST(SynthesizedContacts, FeetAreMovedOntoTheTakesGround) {
   const MotionDatabase& db = testing::DefaultDb();
   const std::vector<FrameRun> runs{{0, 39}};
@@ -405,6 +406,11 @@ TEST(SynthesizedContacts, FeetAreMovedOntoTheTakesGround) {
     GiveSynthesizedContacts(v.report, db.skeleton(), v.fill, v.mapping, v.fill, v.legs);
     EXPECT_NEAR(LeftLeg(v.legs).heel_ground_shift_m, shift, 1e-9) << "ground " << ground;
   }
+  // A foot the vote never has stand (a short dash) is measured from its lowest height instead.
+  const double lowest = Lowest(track);
+  VotedLeftFoot airborne = VoteLeftFoot({}, runs, lowest + 0.04);
+  GiveSynthesizedContacts(airborne.report, db.skeleton(), airborne.fill, airborne.mapping, airborne.fill, airborne.legs);
+  EXPECT_NEAR(LeftLeg(airborne.legs).heel_ground_shift_m, 0.04, 1e-9);
 }
 
 // A bow held out of the corpus, filled from its upper body (the upper-body scenario): the
