@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "processing/core/kinematics.h"
+#include "processing/motion/foot_contacts.h"
 #include "processing/motion/key_fidelity.h"
 
 namespace mocapfill {
@@ -61,20 +62,15 @@ void KeepFlatWhileTheToeStands(std::vector<bool>& heel_down, const std::vector<b
 // kMaxGroundShiftM). The planter measures the same on the clip it plants (foot_plant.h).
 double GroundShift(const std::vector<Eigen::Vector3d>& positions, int num_joints, int joint,
                    const std::vector<bool>& down, double ground_m) {
-  std::vector<double> heights;
+  std::vector<Eigen::Vector3d> track(down.size());
   double lowest = INFINITY;
   for (size_t f = 0; f < down.size(); ++f) {
-    const double y = positions[f * num_joints + joint].y();
-    lowest = std::min(lowest, y);
-    if (down[f]) heights.push_back(y);
+    track[f] = positions[f * num_joints + joint];
+    lowest = std::min(lowest, track[f].y());
   }
   if (!std::isfinite(lowest)) return 0.0;
-  double own = lowest;
-  if (!heights.empty()) {
-    std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
-    own = heights[heights.size() / 2];
-  }
-  const double shift = ground_m - own;
+  const double standing = StandingHeight(track, down);
+  const double shift = ground_m - (std::isfinite(standing) ? standing : lowest);
   return std::abs(shift) <= kMaxGroundShiftM ? shift : 0.0;
 }
 

@@ -59,4 +59,13 @@ std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact) {
   return runs;
 }
 
+double StandingHeight(const std::vector<Eigen::Vector3d>& track, const std::vector<bool>& down) {
+  std::vector<double> heights;
+  for (size_t f = 0; f < track.size() && f < down.size(); ++f)
+    if (down[f]) heights.push_back(track[f].y());
+  if (heights.empty()) return -INFINITY;
+  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
+  return heights[heights.size() / 2];
+}
+
 }  // namespace mocapfill

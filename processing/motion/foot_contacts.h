@@ -32,6 +32,10 @@ std::vector<bool> DetectContacts(const std::vector<Eigen::Vector3d>& track, cons
 // (DetectContacts does this to its own; contacts found otherwise get the same clean-up).
 void TidyContacts(const std::vector<double>& times_s, const ContactDetection& options, std::vector<bool>& contact);
 
+// The median height (+Y) of the joint whose world positions are `track` over the frames `down`
+// marks; -infinity where it marks none.
+double StandingHeight(const std::vector<Eigen::Vector3d>& track, const std::vector<bool>& down);
+
 // Maximal runs of true frames: [first, last] pairs, ascending.
 std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact);
 

@@ -229,16 +229,6 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
   return out;
 }
 
-// The median height of a joint over the frames it stands on.
-double StandingHeight(const std::vector<Vector3d>& track, const std::vector<bool>& down) {
-  std::vector<double> heights;
-  for (size_t f = 0; f < track.size() && f < down.size(); ++f)
-    if (down[f]) heights.push_back(track[f].y());
-  if (heights.empty()) return -INFINITY;
-  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
-  return heights[heights.size() / 2];
-}
-
 // The floor of a joint given its contacts: the median height over them, or its lowest height
 // (`lowest`) if the vote never has it stand (a short dash), moved by `shift` onto the ground.
 double GivenFloor(const std::vector<Vector3d>& track, const std::vector<bool>& down, double lowest, double shift) {

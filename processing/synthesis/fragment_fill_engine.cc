@@ -281,9 +281,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
   const std::vector<std::uint8_t> hanging = HangingJoints(db);
   // Keyed legs are planted on their textured take's contacts too (VoteContacts below).
-  bool keyed_legs_textured = false;
-  for (int j = 0; j < db.num_joints(); ++j) keyed_legs_textured |= options.texture && s.keyed[3 * j] && hanging[j];
-  if (!contacts && (keyed_legs_textured ||
+  std::vector<int> keyed_legs;
+  for (int j = 0; j < db.num_joints() && options.texture; ++j)
+    if (s.keyed[3 * j] && hanging[j]) keyed_legs.push_back(j);
+  if (!contacts && (!keyed_legs.empty() ||
                     std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; }))) {
     ASSIGN_OR_RETURN(DatabaseContacts found, FindDatabaseContacts(db, hanging));
     contacts = std::make_unique<DatabaseContacts>(std::move(found));
@@ -364,15 +365,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       for (int f : {kRootForward, kRootLateral}) root_channels.push_back(db.RootFeatureChannel(f));
     Eigen::MatrixXd source = out;
     const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, keyed_channels, 1, source, timer);
-    if (keyed_legs_textured && contacts) {
-      // The keyed feet stand where the take lending them its detail stood: keys sparser than
-      // a step (every 8 or 16 frames) miss much of each contact, and the feet slid there
-      // (legs16: 18 cm/s during the capture's contacts on the tuning half).
-      std::vector<int> keyed_hanging;
-      for (int j = 0; j < db.num_joints(); ++j)
-        if (s.keyed[3 * j] && hanging[j]) keyed_hanging.push_back(j);
-      VoteContacts(ctx, *contacts, keyed_hanging, r, 1, report);
-    }
+    // The keyed feet stand where the take lending them its detail stood: keys sparser than a
+    // step (every 8 or 16 frames) miss much of each contact, and the feet slid there (legs16:
+    // 18 cm/s during the capture's contacts on the tuning half).
+    if (!keyed_legs.empty() && contacts) VoteContacts(ctx, *contacts, keyed_legs, r, 1, report);
     if (!root_channels.empty()) {
       // From the same takes as the joints' texture, so that hips and legs move together.
       AssemblyInputs lead{&db, ctx.mdb, &ctx.fragments, &r.candidates, r.leads, 1, root_channels, options.crossfade};
