@@ -77,7 +77,7 @@ nlohmann::ordered_json ReportObject(const SketchFillResult& result, const std::s
   for (const FragmentSource& f : r.fragments)
     fragments.push_back({{"group", f.group}, {"frames", {f.first_frame, f.last_frame}}, {"clip", f.clip},
                          {"clip_frames", {f.clip_first_frame, f.clip_last_frame}}, {"distance", f.distance},
-                         {"blended", f.blended}});
+                         {"blended", f.blended}, {"travel_mps", f.travel_mps}});
   out["fragments"] = fragments;
   out["group_order"] = r.group_order;
   out["coverage"] = CoverageJson(r.coverage, result.database_rate_hz);

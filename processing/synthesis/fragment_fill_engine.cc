@@ -49,11 +49,13 @@ struct GroupResult {
   std::vector<std::vector<double>> weights;  // per fragment, over its BlendSet
 };
 
-// A leg chain's candidates must travel as the sketch's root does: a stance foot moves against
-// the hips at the root's speed, so legs from takes that stand or walk at another pace slide.
-// Among a leg's drivers the rest (hips' tilt, torso, arms) outweighed the planar velocity, and
-// a walk backwards with the upper body keyed took its legs from standing gestures.
-void WeighTravelForLegs(const MotionDatabase& db, double factor, std::vector<DrivenChannel>& driven) {
+// A group's candidates should travel as the sketch's root does. A stance foot moves against
+// the hips at the root's speed, so legs from takes that stand or walk at another pace slide;
+// and a standing sketch's torso and arms are better drawn from takes that stand. Among a
+// group's drivers the rest (hips' tilt, torso, legs or arms) outweighed the planar velocity:
+// a walk backwards with the upper body keyed took its legs from standing gestures, and the
+// blends of standing gestures' arms gave walks and runs a fifth of their weight.
+void WeighTravel(const MotionDatabase& db, double factor, std::vector<DrivenChannel>& driven) {
   for (DrivenChannel& d : driven)
     if (d.channel == db.RootFeatureChannel(kRootForward) || d.channel == db.RootFeatureChannel(kRootLateral))
       d.weight *= factor;
@@ -121,6 +123,27 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<Driven
   return r;
 }
 
+// The blended takes' planar root speed over fragment i's matched frames, weighted as blended.
+double BlendedTravel(const FragmentContext& ctx, const GroupResult& r, size_t i, int blend) {
+  const MotionDatabase& db = *ctx.db;
+  if (db.root_joint() < 0) return 0.0;
+  const int forward = db.RootFeatureChannel(kRootForward), lateral = db.RootFeatureChannel(kRootLateral);
+  const std::vector<int> set = BlendSet(r.candidates[i], r.leads[i], blend);
+  const bool weighted = i < r.weights.size() && r.weights[i].size() == set.size();
+  const std::vector<double> weights = weighted ? r.weights[i] : DistanceWeights(r.candidates[i], set);
+  double travel = 0.0;
+  for (size_t k = 0; k < set.size(); ++k) {
+    const DbFragment& g = ctx.mdb->fragments()[r.candidates[i][set[k]].fragment];
+    const int row = db.clip(g.clip).first_frame;
+    double speed = 0.0;
+    for (int f = g.first; f <= g.last; ++f)
+      speed += std::hypot(db.signals()(row + f, forward), db.signals()(row + f, lateral));
+    travel += weights[k] * speed / (g.last - g.first + 1);
+  }
+  // The regression's weights may extrapolate past the slowest candidates: they stand.
+  return std::max(0.0, travel);
+}
+
 void ReportGroup(const FragmentContext& ctx, const std::string& name, const GroupResult& r, int blend,
                  FragmentFillReport& report) {
   for (size_t i = 0; i < ctx.fragments.size(); ++i) {
@@ -128,7 +151,8 @@ void ReportGroup(const FragmentContext& ctx, const std::string& name, const Grou
     const Candidate& c = r.candidates[i][r.leads[i]];
     const DbFragment& g = ctx.mdb->fragments()[c.fragment];
     report.fragments.push_back({name, ctx.fragments[i].first, ctx.fragments[i].last, ctx.db->clip(g.clip).name,
-                                g.first, g.last, c.distance, std::min<int>(blend, r.candidates[i].size())});
+                                g.first, g.last, c.distance, std::min<int>(blend, r.candidates[i].size()),
+                                BlendedTravel(ctx, r, i, blend)});
     if (i > 0 && !r.candidates[i - 1].empty() &&
         !Continues(ctx.mdb->fragments()[r.candidates[i - 1][r.leads[i - 1]].fragment], g))
       ++report.seams;
@@ -323,7 +347,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
                         options.synthesized_driver_weight, options.root_feature_weight, options.root_drives);
       if (driven.empty()) driven = all_keyed;
-      if (hanging[group.joints.back()]) WeighTravelForLegs(db, options.leg_travel_weight, driven);
+      WeighTravel(db, options.travel_weight, driven);
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
       first = false;

@@ -48,8 +48,8 @@ Status FragmentFillOptions::Validate() const {
     return RangeError("synthesized_driver_weight", synthesized_driver_weight, "[0, 10]");
   if (!(root_feature_weight >= 0.0 && root_feature_weight <= 100.0))
     return RangeError("root_feature_weight", root_feature_weight, "[0, 100]");
-  if (!(leg_travel_weight >= 0.0 && leg_travel_weight <= 100.0))
-    return RangeError("leg_travel_weight", leg_travel_weight, "[0, 100]");
+  if (!(travel_weight >= 0.0 && travel_weight <= 100.0))
+    return RangeError("travel_weight", travel_weight, "[0, 100]");
   if (db_phases < 0) return RangeError("db_phases", db_phases, "[0, inf)");
   if (threads < 0) return RangeError("threads", threads, "[0, inf)");
   if (!(coverage.poor_share > 0.0 && coverage.poor_share < 1.0))

@@ -102,8 +102,8 @@ struct FragmentFillOptions {
   bool root_drives = false;        // hierarchical: the keyed root's tilt always among the drivers
   double synthesized_driver_weight = 1.0;  // weight of already synthesised drivers (keyed = 1)
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
-  // Hierarchical: a leg chain's drivers weigh the root's planar velocity this many times more.
-  double leg_travel_weight = 6.0;
+  // Hierarchical: each group's drivers weigh the root's planar velocity this many times more.
+  double travel_weight = 6.0;
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
   CoverageOptions coverage;

@@ -18,6 +18,10 @@ struct FragmentSource {
   int clip_last_frame = 0;
   double distance = 0.0;    // matching distance of that candidate
   int blended = 1;          // candidates averaged into the stretch
+  // Planar speed of the root in the blended takes over their matched frames, weighted as they
+  // are blended (m/s): beside the sketch's own it tells whether the fill drew on takes that
+  // travel as the sketch does (legs from standing takes slide under a walking root).
+  double travel_mps = 0.0;
 };
 
 // How well the database covers one sketch fragment.

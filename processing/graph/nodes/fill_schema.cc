@@ -71,9 +71,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
                         "peak frequency of the fragmentation band"),
            "fragment-hz"),
       NumberOption("root_weight", d.root_feature_weight, 0.0, false, 100.0, "", "weight of the root features among the drivers"),
-      WithFlag(NumberOption("leg_travel_weight", d.leg_travel_weight, 0.0, false, 100.0, "",
-                            "hierarchical: how many times more a leg chain's matching weighs the root's planar velocity (its stance feet must move with it)"),
-               "leg-travel"),
+      WithFlag(NumberOption("travel_weight", d.travel_weight, 0.0, false, 100.0, "",
+                            "hierarchical: how many times more each group's matching weighs the root's planar velocity (stance feet move with it, arms swing with the pace)"),
+               "travel"),
       NumberOption("crossfade", d.crossfade, 0.0, false, 2.0, "",
                    "overlap of neighbouring fragments (share of their length) cross-faded instead of seam smoothing"),
       WithWords(BoolOption("root_drives", d.root_drives, "hierarchical: the keyed root's tilt always drives"), "true", "false"),
@@ -158,7 +158,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.match_samples = o.Int("match_samples");
   options.fragment_band_hz = o.Number("fragment_band_hz");
   options.root_feature_weight = o.Number("root_weight");
-  options.leg_travel_weight = o.Number("leg_travel_weight");
+  options.travel_weight = o.Number("travel_weight");
   options.crossfade = o.Number("crossfade");
   options.local_ridge = o.Number("local_ridge");
   options.limb_reach = o.Number("limb_reach");
