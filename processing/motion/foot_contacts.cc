@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/core/median.h"
+
 namespace mocapfill {
 
 namespace {
@@ -64,8 +66,7 @@ double StandingHeight(const std::vector<Eigen::Vector3d>& track, const std::vect
   for (size_t f = 0; f < track.size() && f < down.size(); ++f)
     if (down[f]) heights.push_back(track[f].y());
   if (heights.empty()) return -INFINITY;
-  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
-  return heights[heights.size() / 2];
+  return UpperMedian(std::move(heights));
 }
 
 }  // namespace mocapfill

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/core/median.h"
 #include "processing/core/smoothstep.h"
 
 namespace mocapfill {
@@ -25,9 +26,7 @@ double ReferenceDistance(const MatchingDatabase& mdb, const std::vector<DrivenCh
   nearest.erase(std::remove_if(nearest.begin(), nearest.end(), [](float d) { return !std::isfinite(d); }),
                 nearest.end());
   if (nearest.empty()) return 0.0;
-  const auto middle = nearest.begin() + nearest.size() / 2;
-  std::nth_element(nearest.begin(), middle, nearest.end());
-  return std::sqrt(*middle);
+  return std::sqrt(UpperMedian(std::move(nearest)));
 }
 
 CoverageReport MeasureCoverage(const std::vector<SketchFragment>& fragments,
@@ -70,9 +69,7 @@ double MedianUnexplained(const CoverageReport& coverage) {
   std::vector<double> shares;
   for (const FragmentCoverage& f : coverage.fragments) shares.push_back(f.unexplained);
   if (shares.empty()) return 0.0;
-  const auto middle = shares.begin() + shares.size() / 2;
-  std::nth_element(shares.begin(), middle, shares.end());
-  return *middle;
+  return UpperMedian(std::move(shares));
 }
 
 Eigen::VectorXd WeightPerFrame(const CoverageReport& coverage, double FragmentCoverage::*of, int frames) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "processing/core/kinematics.h"
+#include "processing/core/median.h"
 #include "processing/database/stored_clips.h"
 #include "processing/motion/foot_contacts.h"
 
@@ -60,9 +61,7 @@ Result<DatabaseContacts> FindDatabaseContacts(const MotionDatabase& db, const st
   for (size_t i = 0; i < kept.size(); ++i) {
     out.joints.push_back(joints[kept[i]]);
     out.down.col(i) = down.col(kept[i]);
-    std::vector<double>& h = heights[kept[i]];
-    std::nth_element(h.begin(), h.begin() + h.size() / 2, h.end());
-    out.standing_height_m.push_back(h[h.size() / 2]);
+    out.standing_height_m.push_back(UpperMedian(std::move(heights[kept[i]])));
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "processing/synthesis/joining.h"
 
+#include "processing/core/median.h"
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -91,10 +93,7 @@ std::vector<int> BestAnimation(const JoinInputs& in) {
   for (size_t i = 0; i < cands.size(); ++i) {
     std::vector<double> d;
     for (const Candidate& c : cands[i]) d.push_back(c.distance);
-    if (!d.empty()) {
-      std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-      penalty[i] = 2.0 * d[d.size() / 2];
-    }
+    if (!d.empty()) penalty[i] = 2.0 * UpperMedian(std::move(d));
     for (const Candidate& c : cands[i]) {
       auto& v = best_by_clip.try_emplace(frags[c.fragment].clip, cands.size(), -1.0).first->second;
       if (v[i] < 0.0 || c.distance < v[i]) v[i] = c.distance;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "processing/core/median.h"
+
 namespace mocapfill {
 
 namespace {
@@ -42,8 +44,7 @@ int MedianSpacing(const std::vector<std::vector<int>>& key_frames) {
   for (const std::vector<int>& keys : key_frames)
     for (size_t k = 1; k < keys.size(); ++k) gaps.push_back(keys[k] - keys[k - 1]);
   if (gaps.empty()) return 1;
-  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
-  return std::max(1, gaps[gaps.size() / 2]);
+  return std::max(1, UpperMedian(std::move(gaps)));
 }
 
 }  // namespace

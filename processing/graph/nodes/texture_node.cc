@@ -6,6 +6,7 @@
 // texturing stage does.
 #include <algorithm>
 
+#include "processing/core/median.h"
 #include "processing/graph/nodes/node_support.h"
 #include "processing/graph/nodes/nodes.h"
 #include "processing/motion/tangent_space.h"
@@ -23,8 +24,7 @@ int MedianKeySpacing(const MotionClip& clip) {
     for (size_t k = 1; k < keys.rotation_frames.size(); ++k)
       gaps.push_back(keys.rotation_frames[k] - keys.rotation_frames[k - 1]);
   if (gaps.empty()) return 0;
-  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
-  return gaps[gaps.size() / 2];
+  return UpperMedian(std::move(gaps));
 }
 
 // Frames [start, start + frames) of `clip`.
