@@ -63,14 +63,10 @@ void KeepFlatWhileTheToeStands(std::vector<bool>& heel_down, const std::vector<b
 double GroundShift(const std::vector<Eigen::Vector3d>& positions, int num_joints, int joint,
                    const std::vector<bool>& down, double ground_m) {
   std::vector<Eigen::Vector3d> track(down.size());
-  double lowest = INFINITY;
-  for (size_t f = 0; f < down.size(); ++f) {
-    track[f] = positions[f * num_joints + joint];
-    lowest = std::min(lowest, track[f].y());
-  }
-  if (!std::isfinite(lowest)) return 0.0;
-  const double standing = StandingHeight(track, down);
-  const double shift = ground_m - (std::isfinite(standing) ? standing : lowest);
+  for (size_t f = 0; f < down.size(); ++f) track[f] = positions[f * num_joints + joint];
+  const double standing = StandingOrLowestHeight(track, down);
+  if (!std::isfinite(standing)) return 0.0;
+  const double shift = ground_m - standing;
   return std::abs(shift) <= kMaxGroundShiftM ? shift : 0.0;
 }
 

@@ -36,6 +36,10 @@ void TidyContacts(const std::vector<double>& times_s, const ContactDetection& op
 // marks; -infinity where it marks none.
 double StandingHeight(const std::vector<Eigen::Vector3d>& track, const std::vector<bool>& down);
 
+// The height the joint stands at: StandingHeight, or its lowest height where `down` marks no
+// frame (a foot the contacts never have stand, as in a short dash); -infinity for no frames.
+double StandingOrLowestHeight(const std::vector<Eigen::Vector3d>& track, const std::vector<bool>& down);
+
 // Maximal runs of true frames: [first, last] pairs, ascending.
 std::vector<std::pair<int, int>> ContactRuns(const std::vector<bool>& contact);
 

@@ -230,10 +230,10 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
 }
 
 // The floor of a joint given its contacts: the median height over them, or its lowest height
-// (`lowest`) if the vote never has it stand (a short dash), moved by `shift` onto the ground.
+// if the vote never has it stand (a short dash), moved by `shift` onto the ground; never below
+// `lowest`, where it would lift nothing.
 double GivenFloor(const std::vector<Vector3d>& track, const std::vector<bool>& down, double lowest, double shift) {
-  const double standing = StandingHeight(track, down);
-  return std::isfinite(standing) ? std::max(lowest, standing + shift) : lowest + shift;
+  return std::max(lowest, StandingOrLowestHeight(track, down) + shift);
 }
 
 // Between keys the slerped legs and the linearly interpolated root can sink a foot below the

@@ -128,9 +128,9 @@ double BlendedTravel(const FragmentContext& ctx, const GroupResult& r, size_t i,
   const MotionDatabase& db = *ctx.db;
   if (db.root_joint() < 0) return 0.0;
   const int forward = db.RootFeatureChannel(kRootForward), lateral = db.RootFeatureChannel(kRootLateral);
+  // The weights the assembly blended with (SynthesiseGroup sets them for every fragment).
   const std::vector<int> set = BlendSet(r.candidates[i], r.leads[i], blend);
-  const bool weighted = i < r.weights.size() && r.weights[i].size() == set.size();
-  const std::vector<double> weights = weighted ? r.weights[i] : DistanceWeights(r.candidates[i], set);
+  const std::vector<double>& weights = r.weights[i];
   double travel = 0.0;
   for (size_t k = 0; k < set.size(); ++k) {
     const DbFragment& g = ctx.mdb->fragments()[r.candidates[i][set[k]].fragment];

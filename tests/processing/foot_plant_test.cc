@@ -76,6 +76,20 @@ TEST(FootContacts, CapturedWalkStillFramesAreContacts) {
   EXPECT_LT(detected, 0.7 * 4 * clip.num_frames);  // swing frames are not contacts
 }
 
+// A foot stands at the median height of its contacts; one that never stands, at its lowest.
+TEST(FootContacts, StandingHeightIsTheContactsMedianElseTheLowest) {
+  Result<Scene> walk = ImportFile(testing::FixturePath("default_db/dataset-1_walk_normal_001.bvh"));
+  ASSERT_TRUE(walk.ok()) << walk.status().message();
+  const std::vector<Eigen::Vector3d> track = TrackOf(walk->skeleton, walk->clips[0], *walk->skeleton.Find("Foot_L"));
+  const std::vector<bool> contact = DetectContacts(track, TimesOf(walk->clips[0]), Lowest(track), {});
+  const double standing = StandingOrLowestHeight(track, contact);
+  EXPECT_EQ(standing, StandingHeight(track, contact));
+  EXPECT_GT(standing, Lowest(track));  // the heel rolls below its standing height
+  EXPECT_LT(standing, Lowest(track) + 0.03);
+  EXPECT_EQ(StandingOrLowestHeight(track, std::vector<bool>(track.size(), false)), Lowest(track));
+  EXPECT_EQ(StandingOrLowestHeight({}, {}), -INFINITY);
+}
+
 // The contacts the planter finds on a fill (the legs keyed every 8 frames, free feet) are those
 // the same detector finds on the capture the sketch was made from, on at least 90 % of frames,
 // with a database that covers walking (the corpus without the sketch's style, as in
