@@ -7,6 +7,7 @@
 
 #include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
+#include "processing/retargeting/rig_mapping.h"
 
 namespace mocapfill {
 
@@ -85,21 +86,46 @@ void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled
   m.foot_contact_frames = contacts;
 }
 
+// The foot joints grouped by kind (ankles, toes): one ground per kind, the lowest either side
+// reaches in the capture. Each joint's own lowest would take a capture that holds one heel up
+// throughout as the ground under that heel, and count a filled foot standing flat as sunk.
+// Sides come from the humanoid mapping; a rig it cannot map keeps one group per foot joint.
+std::vector<std::vector<int>> FootKinds(const Skeleton& skeleton, const std::vector<int>& feet) {
+  std::vector<std::vector<int>> kinds;
+  const Result<RigMapping> mapping = MapHumanoid(skeleton, {});
+  if (mapping.ok()) {
+    for (auto [left, right] : {std::pair{HumanoidBone::kLeftFoot, HumanoidBone::kRightFoot},
+                               std::pair{HumanoidBone::kLeftToes, HumanoidBone::kRightToes}}) {
+      std::vector<int> kind;
+      for (HumanoidBone bone : {left, right})
+        if (std::find(feet.begin(), feet.end(), mapping->joint(bone)) != feet.end()) kind.push_back(mapping->joint(bone));
+      if (!kind.empty()) kinds.push_back(kind);
+    }
+  }
+  for (int j : feet)
+    if (std::none_of(kinds.begin(), kinds.end(), [&](const std::vector<int>& k) { return std::count(k.begin(), k.end(), j); }))
+      kinds.push_back({j});
+  return kinds;
+}
+
 // Heights are world y (the importers' up axis), as the skating measure's horizontal plane is.
-void ScorePenetration(const Posed& truth, const Posed& filled, const std::vector<int>& feet, int frames,
-                      int num_joints, FillMetrics& m) {
+void ScorePenetration(const Skeleton& skeleton, const Posed& truth, const Posed& filled, const std::vector<int>& feet,
+                      int frames, FillMetrics& m) {
+  const int nj = skeleton.num_joints();
   double deepest = 0.0, sum = 0.0;
   long below = 0;
-  for (int j : feet) {
-    double floor = std::numeric_limits<double>::infinity();
-    for (int f = 0; f < frames; ++f) floor = std::min(floor, truth.positions[f * num_joints + j].y());
-    for (int f = 0; f < frames; ++f) {
-      const double depth = (floor - filled.positions[f * num_joints + j].y()) * kCmPerM;
-      if (depth <= 0.0) continue;
-      deepest = std::max(deepest, depth);
-      sum += depth;
-      ++below;
-    }
+  for (const std::vector<int>& kind : FootKinds(skeleton, feet)) {
+    double ground = std::numeric_limits<double>::infinity();
+    for (int j : kind)
+      for (int f = 0; f < frames; ++f) ground = std::min(ground, truth.positions[f * nj + j].y());
+    for (int j : kind)
+      for (int f = 0; f < frames; ++f) {
+        const double depth = (ground - filled.positions[f * nj + j].y()) * kCmPerM;
+        if (depth <= 0.0) continue;
+        deepest = std::max(deepest, depth);
+        sum += depth;
+        ++below;
+      }
   }
   m.penetration_max_cm = deepest;
   m.penetration_mean_cm = below ? sum / below : 0.0;
@@ -242,7 +268,7 @@ Result<FillMetrics> ScoreFill(const Skeleton& skeleton, const MotionClip& truth,
   const double true_jerk = MeanJerk(pt, body, frames, nj, rate);
   m.jitter_ratio = true_jerk > 0.0 ? MeanJerk(pf, body, frames, nj, rate) / true_jerk : 0.0;
   ScoreFeet(skeleton, pt, pf, feet, frames, rate, m);
-  ScorePenetration(pt, pf, feet, frames, nj, m);
+  ScorePenetration(skeleton, pt, pf, feet, frames, m);
   ScoreKeys(skeleton, sketch, filled, m);
   m.bone_length_error = BoneLengthError(skeleton, truth, pt, pf, frames);
   return m;

@@ -31,9 +31,9 @@ struct FillMetrics {
   double foot_skate_cm_per_s = 0.0;
   double foot_skate_share = 0.0;
   long foot_contact_frames = 0;
-  // Ground penetration (cm) of the filled foot joints: each one's floor is the truth's lowest
-  // height of that joint over the clip (the capture's own floor, whatever its offset); the
-  // deepest any of them goes below its floor, and the mean depth over the (frame, joint) pairs
+  // Ground penetration (cm) of the filled foot joints: the floor of a kind of joint (ankles,
+  // toes) is the truth's lowest height of either side's joint over the clip (the capture's own
+  // floor, whatever its offset); the deepest any of them goes below its floor, and the mean depth over the (frame, joint) pairs
   // that are below it (0 when none is).
   double penetration_max_cm = 0.0;
   double penetration_mean_cm = 0.0;
