@@ -215,9 +215,18 @@ CoverageReport MeasureSketchCoverage(const FragmentContext& ctx, CoverageYardsti
   return MeasureCoverage(ctx.fragments, nearest, energies, yardstick.distance, options.coverage);
 }
 
+// The keyed root's planar velocities, which the texture gives the lead's detail (empty when
+// the sketch does not key the root's translation).
+std::vector<int> TravelChannels(const MotionDatabase& db, const SketchSignals& s) {
+  if (!RootFeaturesKeyed(db, s)) return {};
+  return {db.RootFeatureChannel(kRootForward), db.RootFeatureChannel(kRootLateral)};
+}
+
 // Blends poorly covered stretches towards the prior: synthesised channels towards the mean
 // pose or the nearest database pose, keyed ones towards the sketch (their texture fades;
-// keys stay exact, the sketch holds them), each with its own weight.
+// keys stay exact, the sketch holds them), each with its own weight. The keyed travel fades
+// to the low band of the keys' velocities, as the texture has it: their own (the interval
+// means, a path linear between keys) kinked at every key and jolted the whole body there.
 void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const FragmentFillOptions& options,
                        const CoverageReport& coverage, Eigen::MatrixXd& out) {
   const Eigen::VectorXd prior_weight = WeightPerFrame(coverage, &FragmentCoverage::prior_weight, s.frames);
@@ -229,6 +238,9 @@ void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const F
   } else {
     FillNearest(db, s, options, prior);
   }
+  const Eigen::MatrixXd no_detail = Eigen::MatrixXd::Zero(s.frames, s.num_channels());
+  TextureChannels(s.values, no_detail, TravelChannels(db, s), TextureBandCount(s.key_spacing, db.rate_hz()),
+                  db.rate_hz(), prior);
   std::vector<int> synthesized, keyed;
   for (int c = 0; c < s.num_channels(); ++c) (s.keyed[c] ? keyed : synthesized).push_back(c);
   BlendTowards(prior, prior_weight, synthesized, out);
@@ -395,9 +407,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     // curve through its keys): a captured bob the legs' planted feet do not follow made the
     // knees snap into the keys. The yaw rate is left as keyed: the heading it integrates to
     // must meet the root's rotation keys.
-    std::vector<int> root_channels;
-    if (RootFeaturesKeyed(db, s))
-      for (int f : {kRootForward, kRootLateral}) root_channels.push_back(db.RootFeatureChannel(f));
+    const std::vector<int> root_channels = TravelChannels(db, s);
     Eigen::MatrixXd source = out;
     const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, keyed_channels, 1, source, timer);
     // The keyed feet stand where the take lending them its detail stood: keys sparser than a

@@ -175,6 +175,35 @@ TEST(Coverage, RaisedThighsArePoorlyCoveredAndBlendedTowardsTheMeanPose) {
   EXPECT_NE(warning.find("towards the database mean pose"), std::string::npos);
 }
 
+// The largest third difference (m per frame cubed) of the root's path over frames [first, last].
+double LargestRootJerk(const MotionClip& clip, int root, int first, int last) {
+  double largest = 0.0;
+  auto p = [&](int f) { return clip.translation(f, root); };
+  for (int f = std::max(first, 2); f + 1 <= last; ++f)
+    largest = std::max(largest, (p(f + 1) - 3.0 * p(f) + 3.0 * p(f - 1) - p(f - 2)).norm());
+  return largest;
+}
+
+// Where the fill falls back to the sketch, the root still travels smoothly: its path, linear
+// between the keys as the sketch has it, kinked at every key and jolted the whole body there
+// (the jerkiest frames of poorly covered gestures). The keys stay exact.
+TEST(Coverage, PoorlyCoveredTravelStaysSmoothThroughItsKeys) {
+  const MotionClip sketch = WalkWithRaisedThighs();
+  const int root = DefaultDb().root_joint();
+  Result<FillResult> filled = FillEngine(DefaultDb()).Fill(sketch, {});
+  ASSERT_TRUE(filled.ok()) << filled.status().message();
+  const Eigen::VectorXd w = WeightPerFrame(filled->report.coverage, &FragmentCoverage::texture_weight, sketch.num_frames);
+  ASSERT_GE(w.minCoeff(), 1.0);  // the texture has faded on every frame
+  const int last = sketch.num_frames - 1;
+  const double lerped = LargestRootJerk(sketch, root, 0, last), fill = LargestRootJerk(filled->clip, root, 0, last);
+  std::printf("largest jerk of the root's path %.2f mm/frame^3, the sketch's %.2f\n", 1000.0 * fill, 1000.0 * lerped);
+  EXPECT_LT(fill, 0.5 * lerped);
+  double key_error = 0.0;
+  for (int f : sketch.keys[root].translation_frames)
+    key_error = std::max(key_error, (filled->clip.translation(f, root) - sketch.translation(f, root)).norm());
+  EXPECT_LT(key_error, 1e-6);
+}
+
 // Upper-body error (cm) of the default method and of `mean` on a captured clip the default
 // database does not hold, keyed at the root and legs every 8 frames.
 struct Scores {
