@@ -87,16 +87,30 @@ struct JointContacts {
 bool HasKeys(const std::vector<bool>& pinned) { return std::find(pinned.begin(), pinned.end(), true) != pinned.end(); }
 
 // The takes' vote cannot hold a keyed foot between two keys that have it move faster than a
-// standing foot does (capture's 0.3 m/s): the animator's keys overrule the takes there.
+// standing foot does (capture's 0.3 m/s): the animator's keys overrule the takes there. Where
+// a foot the takes have standing at a key lifts more than twice `fade_s` before it lands for
+// the next (room to let one hold go and take up the other without a pop: with keys every 16
+// frames most often, every 8 seldom, every 4 never), it stands at the key until it lifts and
+// from where it lands until the next key: keys sparser than a step fall once or twice in it
+// and missed most of the capture's contacts. What the vote has standing away from both keys
+// is dropped, and so is a contact from key to key.
 void DropVotesTheKeysDeny(const std::vector<Vector3d>& track, const std::vector<double>& times,
-                          const std::vector<bool>& pinned, double standing_speed, std::vector<bool>& voted) {
+                          const std::vector<bool>& pinned, double standing_speed, double fade_s,
+                          std::vector<bool>& voted) {
   int previous = -1;
   for (int f = 0; f < static_cast<int>(track.size()); ++f) {
     if (!pinned[f]) continue;
     if (previous >= 0) {
       const Vector3d d = track[f] - track[previous];
-      if (std::hypot(d.x(), d.z()) > standing_speed * (times[f] - times[previous]))
-        std::fill(voted.begin() + previous + 1, voted.begin() + f, false);
+      if (std::hypot(d.x(), d.z()) > standing_speed * (times[f] - times[previous])) {
+        int lifts = previous, lands = f;  // the vote's stance runs from the keys inwards
+        if (voted[previous])
+          while (lifts + 1 < f && voted[lifts + 1]) ++lifts;
+        if (voted[f])
+          while (lands - 1 > previous && voted[lands - 1]) --lands;
+        if (times[lands] - times[lifts] <= 2.0 * fade_s) lifts = previous, lands = f;  // no room to swing
+        std::fill(voted.begin() + lifts + 1, voted.begin() + lands, false);
+      }
     }
     previous = f;
   }
@@ -111,7 +125,7 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
   const bool is_given = given.size() == track.size();
   const bool keyed = HasKeys(pinned);
   std::vector<bool> voted = is_given ? given : std::vector<bool>(track.size(), false);
-  if (is_given && keyed) DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, voted);
+  if (is_given && keyed) DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s, voted);
   JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, FloorOf(track, pinned), options.detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
   if (is_given && keyed)
