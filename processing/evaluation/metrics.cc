@@ -98,13 +98,16 @@ std::vector<std::vector<int>> FootKinds(const Skeleton& skeleton, const std::vec
                                std::pair{HumanoidBone::kLeftToes, HumanoidBone::kRightToes}}) {
       std::vector<int> kind;
       for (HumanoidBone bone : {left, right})
-        if (std::find(feet.begin(), feet.end(), mapping->joint(bone)) != feet.end()) kind.push_back(mapping->joint(bone));
+        if (std::count(feet.begin(), feet.end(), mapping->joint(bone))) kind.push_back(mapping->joint(bone));
       if (!kind.empty()) kinds.push_back(kind);
     }
   }
+  auto grouped = [&](int j) {
+    return std::any_of(kinds.begin(), kinds.end(),
+                       [&](const std::vector<int>& k) { return std::count(k.begin(), k.end(), j); });
+  };
   for (int j : feet)
-    if (std::none_of(kinds.begin(), kinds.end(), [&](const std::vector<int>& k) { return std::count(k.begin(), k.end(), j); }))
-      kinds.push_back({j});
+    if (!grouped(j)) kinds.push_back({j});
   return kinds;
 }
 

@@ -33,8 +33,8 @@ struct FillMetrics {
   long foot_contact_frames = 0;
   // Ground penetration (cm) of the filled foot joints: the floor of a kind of joint (ankles,
   // toes) is the truth's lowest height of either side's joint over the clip (the capture's own
-  // floor, whatever its offset); the deepest any of them goes below its floor, and the mean depth over the (frame, joint) pairs
-  // that are below it (0 when none is).
+  // floor, whatever its offset); the deepest any of them goes below its floor, and the mean
+  // depth over the (frame, joint) pairs that are below it (0 when none is).
   double penetration_max_cm = 0.0;
   double penetration_mean_cm = 0.0;
   // Geodesic angle (deg) between output and sketch at keyed (joint, frame) pairs.

@@ -72,8 +72,9 @@ double StandingHeight(const std::vector<Eigen::Vector3d>& track, const std::vect
 double StandingOrLowestHeight(const std::vector<Eigen::Vector3d>& track, const std::vector<bool>& down) {
   const double standing = StandingHeight(track, down);
   if (std::isfinite(standing)) return standing;
-  double lowest = -INFINITY;
-  for (size_t f = 0; f < track.size(); ++f) lowest = f == 0 ? track[f].y() : std::min(lowest, track[f].y());
+  if (track.empty()) return -INFINITY;
+  double lowest = INFINITY;
+  for (const Eigen::Vector3d& p : track) lowest = std::min(lowest, p.y());
   return lowest;
 }
 

@@ -125,7 +125,8 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
   const bool is_given = given.size() == track.size();
   const bool keyed = HasKeys(pinned);
   std::vector<bool> voted = is_given ? given : std::vector<bool>(track.size(), false);
-  if (is_given && keyed) DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s, voted);
+  if (is_given && keyed)
+    DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s, voted);
   JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, FloorOf(track, pinned), options.detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero())};
   if (is_given && keyed)

@@ -192,7 +192,8 @@ TEST(Coverage, PoorlyCoveredTravelStaysSmoothThroughItsKeys) {
   const int root = DefaultDb().root_joint();
   Result<FillResult> filled = FillEngine(DefaultDb()).Fill(sketch, {});
   ASSERT_TRUE(filled.ok()) << filled.status().message();
-  const Eigen::VectorXd w = WeightPerFrame(filled->report.coverage, &FragmentCoverage::texture_weight, sketch.num_frames);
+  const Eigen::VectorXd w =
+      WeightPerFrame(filled->report.coverage, &FragmentCoverage::texture_weight, sketch.num_frames);
   ASSERT_GE(w.minCoeff(), 1.0);  // the texture has faded on every frame
   const int last = sketch.num_frames - 1;
   const double lerped = LargestRootJerk(sketch, root, 0, last), fill = LargestRootJerk(filled->clip, root, 0, last);

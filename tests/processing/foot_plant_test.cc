@@ -453,7 +453,7 @@ TEST(FootPlant, StandingSynthesisedFeetStayStillAndOnTheGround) {
   EXPECT_LT(filled->key_error_max_deg, kPlantedKeysToleranceDeg);
   EXPECT_LT(m->jitter_ratio, 1.1);
   EXPECT_LT(m->foot_skate_cm_per_s, 5.0);   // issue 15's limit
-  EXPECT_LT(m->penetration_max_cm, 1.0);  // issue 15's limit
+  EXPECT_LT(m->penetration_max_cm, 1.0);    // issue 15's limit
 }
 
 // Keys every 16 frames (0.53 s) fall once or twice in each step, and the contacts found on the
@@ -508,7 +508,8 @@ TEST(FootPlant, SparselyKeyedFeetStandAtTheKeysTheyStandOn) {
   MOCAPFILL_REQUIRE_CORPUS();
   Result<HeldOutSketch> take = MakeHeldOutSketch("dataset-1_walk_happy_001", "legs16", "happy");
   ASSERT_TRUE(take.ok()) << take.status().message();
-  Result<SketchFillResult> filled = FillSketch(Scene{take->truth.skeleton, {take->sketch}, {}, {}, {}, {}}, *take->db, {});
+  Result<SketchFillResult> filled =
+      FillSketch(Scene{take->truth.skeleton, {take->sketch}, {}, {}, {}, {}}, *take->db, {});
   ASSERT_TRUE(filled.ok()) << filled.status().message();
   Result<FillMetrics> m = ScoreFill(take->truth.skeleton, take->truth.clips[0], take->sketch, filled->scene.clips[0],
                                     take->db->root_joint());
