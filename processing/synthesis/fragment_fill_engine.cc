@@ -128,9 +128,8 @@ double BlendedTravel(const FragmentContext& ctx, const GroupResult& r, size_t i,
   const MotionDatabase& db = *ctx.db;
   if (db.root_joint() < 0) return 0.0;
   const int forward = db.RootFeatureChannel(kRootForward), lateral = db.RootFeatureChannel(kRootLateral);
-  // The weights the assembly blended with (SynthesiseGroup sets them for every fragment).
   const std::vector<int> set = BlendSet(r.candidates[i], r.leads[i], blend);
-  const std::vector<double>& weights = r.weights[i];
+  const std::vector<double>& weights = r.weights[i];  // as blended (SynthesiseGroup sets every fragment's)
   double travel = 0.0;
   for (size_t k = 0; k < set.size(); ++k) {
     const DbFragment& g = ctx.mdb->fragments()[r.candidates[i][set[k]].fragment];
@@ -238,9 +237,7 @@ void BlendPoorCoverage(const MotionDatabase& db, const SketchSignals& s, const F
   } else {
     FillNearest(db, s, options, prior);
   }
-  const Eigen::MatrixXd no_detail = Eigen::MatrixXd::Zero(s.frames, s.num_channels());
-  TextureChannels(s.values, no_detail, TravelChannels(db, s), TextureBandCount(s.key_spacing, db.rate_hz()),
-                  db.rate_hz(), prior);
+  LowBandChannels(s.values, TravelChannels(db, s), TextureBandCount(s.key_spacing, db.rate_hz()), db.rate_hz(), prior);
   std::vector<int> synthesized, keyed;
   for (int c = 0; c < s.num_channels(); ++c) (s.keyed[c] ? keyed : synthesized).push_back(c);
   BlendTowards(prior, prior_weight, synthesized, out);

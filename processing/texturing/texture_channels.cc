@@ -14,23 +14,41 @@ int TextureBandCount(int key_spacing, double rate_hz) {
   return count;
 }
 
+namespace {
+
+Eigen::MatrixXd Columns(const Eigen::MatrixXd& m, const std::vector<int>& channels) {
+  Eigen::MatrixXd out(m.rows(), channels.size());
+  for (size_t i = 0; i < channels.size(); ++i) out.col(i) = m.col(channels[i]);
+  return out;
+}
+
+Result<Pyramid> TexturePyramid(const Eigen::MatrixXd& signal, int texture_bands, double rate_hz) {
+  PyramidOptions options;
+  options.levels = texture_bands;
+  return BuildPyramid(signal, rate_hz, options);
+}
+
+}  // namespace
+
 void TextureChannels(const Eigen::MatrixXd& smooth, const Eigen::MatrixXd& source, const std::vector<int>& channels,
                      int texture_bands, double rate_hz, Eigen::MatrixXd& out, int finest_band) {
   finest_band = std::max(0, finest_band);
   if (texture_bands <= finest_band || channels.empty() || smooth.rows() < 2) return;
-  Eigen::MatrixXd a(smooth.rows(), channels.size()), b(source.rows(), channels.size());
-  for (size_t i = 0; i < channels.size(); ++i) {
-    a.col(i) = smooth.col(channels[i]);
-    b.col(i) = source.col(channels[i]);
-  }
-  PyramidOptions options;
-  options.levels = texture_bands;
-  Result<Pyramid> pa = BuildPyramid(a, rate_hz, options);
-  Result<Pyramid> pb = BuildPyramid(b, rate_hz, options);
+  const Eigen::MatrixXd b = Columns(source, channels);
+  Result<Pyramid> pa = TexturePyramid(Columns(smooth, channels), texture_bands, rate_hz);
+  Result<Pyramid> pb = TexturePyramid(b, texture_bands, rate_hz);
   if (!pa.ok() || !pb.ok()) return;
   Eigen::MatrixXd textured = pa->residual + (b - pb->residual);  // G_kt(smooth) + high bands(source)
   for (int k = 0; k < finest_band; ++k) textured -= pb->bands[k];
   for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = textured.col(i);
+}
+
+void LowBandChannels(const Eigen::MatrixXd& smooth, const std::vector<int>& channels, int texture_bands,
+                     double rate_hz, Eigen::MatrixXd& out) {
+  if (texture_bands <= 0 || channels.empty() || smooth.rows() < 2) return;
+  Result<Pyramid> p = TexturePyramid(Columns(smooth, channels), texture_bands, rate_hz);
+  if (!p.ok()) return;
+  for (size_t i = 0; i < channels.size(); ++i) out.col(channels[i]) = p->residual.col(i);
 }
 
 }  // namespace mocapfill

@@ -23,4 +23,9 @@ int TextureBandCount(int key_spacing, double rate_hz);
 void TextureChannels(const Eigen::MatrixXd& smooth, const Eigen::MatrixXd& source, const std::vector<int>& channels,
                      int texture_bands, double rate_hz, Eigen::MatrixXd& out, int finest_band = 0);
 
+// Channel a of `out` becomes G_kt(smooth) alone, the texture's low band without any detail
+// (for the listed a; nothing for texture_bands <= 0, no channel or fewer than two frames).
+void LowBandChannels(const Eigen::MatrixXd& smooth, const std::vector<int>& channels, int texture_bands,
+                     double rate_hz, Eigen::MatrixXd& out);
+
 }  // namespace mocapfill
