@@ -40,6 +40,14 @@ struct FragmentContext {
   const FragmentFillOptions* options;
   std::vector<SketchFragment> fragments;
   Eigen::VectorXf sigma;
+  std::vector<int> moving;  // per fragment: 1 where the sketch's root moves (TravellingFragments)
+};
+
+// A group's matching drivers: `driven`, or `moving` (when not empty) in the fragments where the
+// sketch's root moves.
+struct GroupDrivers {
+  std::vector<DrivenChannel> driven;
+  std::vector<DrivenChannel> moving;
 };
 
 // Matches, joins and assembles one target set; returns the joined leads and candidates.
@@ -55,10 +63,27 @@ struct GroupResult {
 // group's drivers the rest (hips' tilt, torso, legs or arms) outweighed the planar velocity:
 // a walk backwards with the upper body keyed took its legs from standing gestures, and the
 // blends of standing gestures' arms gave walks and runs a fifth of their weight.
-void WeighTravel(const MotionDatabase& db, double factor, std::vector<DrivenChannel>& driven) {
+std::vector<DrivenChannel> WeighTravel(const MotionDatabase& db, double factor, std::vector<DrivenChannel> driven) {
   for (DrivenChannel& d : driven)
     if (d.channel == db.RootFeatureChannel(kRootForward) || d.channel == db.RootFeatureChannel(kRootLateral))
       d.weight *= factor;
+  return driven;
+}
+
+// Per sketch fragment: 1 where the keyed root's planar speed, averaged over the fragment,
+// exceeds `speed` (m/s); all 0 when the root's translation is not keyed.
+std::vector<int> TravellingFragments(const MotionDatabase& db, const SketchSignals& s,
+                                     const std::vector<SketchFragment>& fragments, double speed) {
+  std::vector<int> moving(fragments.size(), 0);
+  if (!RootFeaturesKeyed(db, s)) return moving;
+  const int forward = db.RootFeatureChannel(kRootForward), lateral = db.RootFeatureChannel(kRootLateral);
+  for (size_t i = 0; i < fragments.size(); ++i) {
+    double sum = 0.0;
+    for (int f = fragments[i].first; f <= fragments[i].last; ++f)
+      sum += std::hypot(s.values(f, forward), s.values(f, lateral));
+    moving[i] = sum / (fragments[i].last - fragments[i].first + 1) > speed;
+  }
+  return moving;
 }
 
 std::vector<DrivenChannel> AllKeyedDrivers(const MotionDatabase& db, const SketchSignals& s,
@@ -93,15 +118,19 @@ std::vector<std::vector<double>> BlendWeights(const FragmentContext& ctx, const 
   return weights;
 }
 
-// Matches on `driven`; the local regression of the blend (BlendWeights) runs on `regressors`.
+// Matches on `drivers`; the local regression of the blend (BlendWeights) runs on `regressors`.
 // With `positions` (GroupPositions of the group), the weights then move towards the
 // candidates' geometric median posture (consensus_weights.h).
-GroupResult SynthesiseGroup(const FragmentContext& ctx, const std::vector<DrivenChannel>& driven,
+GroupResult SynthesiseGroup(const FragmentContext& ctx, const GroupDrivers& drivers,
                             const std::vector<DrivenChannel>& regressors, const std::vector<int>& targets, int blend,
                             Eigen::MatrixXd& out, StageTimer& timer, const Eigen::MatrixXf* positions = nullptr) {
   const Eigen::MatrixXd match = MatchingSignal(out, ctx.db->rate_hz(), *ctx.options);
   GroupResult r;
-  r.candidates = MatchFragments(*ctx.mdb, match, ctx.fragments, driven, *ctx.options);
+  if (drivers.moving.empty())
+    r.candidates = MatchFragments(*ctx.mdb, match, ctx.fragments, drivers.driven, *ctx.options);
+  else
+    r.candidates = MatchFragmentsBySet(*ctx.mdb, match, ctx.fragments, {drivers.driven, drivers.moving}, ctx.moving,
+                                       *ctx.options);
   timer.Mark("match");
   JoinInputs join{ctx.db, ctx.mdb, &r.candidates, targets, ctx.sigma, ctx.options->transition_gamma};
   r.leads = JoinCandidates(ctx.options->join, join);
@@ -296,8 +325,9 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
-  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db)};
+  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db), {}};
   ASSIGN_OR_RETURN(ctx.fragments, FragmentSketch(s, master, band, rate));
+  ctx.moving = TravellingFragments(db, s, ctx.fragments, options.moving_speed_m_per_s);
   report.master_channel = db.ChannelName(master);
   report.fragment_band = band;
   report.sketch_fragments = static_cast<int>(ctx.fragments.size());
@@ -325,6 +355,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   const std::vector<std::uint8_t> hanging = HangingJoints(db);
   // Keyed legs are planted on their textured take's contacts too (VoteContacts below).
   std::vector<int> keyed_legs;
+  bool legs_keyed = false;  // the sketch's legs carry its gait (moving_travel_weight)
+  for (int j = 0; j < db.num_joints(); ++j) legs_keyed = legs_keyed || (s.keyed[3 * j] && hanging[j]);
   for (int j = 0; j < db.num_joints() && options.texture; ++j)
     if (s.keyed[3 * j] && hanging[j]) keyed_legs.push_back(j);
   if (!contacts && (!keyed_legs.empty() ||
@@ -342,7 +374,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   Eigen::MatrixXd lead_detail = Eigen::MatrixXd::Zero(out.rows(), out.cols());
   if (options.method == FillMethod::kFragment) {
     if (!synthesized.empty()) {
-      const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, synthesized, options.blend, out, timer);
+      const GroupResult r = SynthesiseGroup(ctx, {all_keyed, {}}, all_keyed, synthesized, options.blend, out, timer);
       ReachLikeTheTakes(ctx, reaching, joints, r, options.blend, out);
       ReportGroup(ctx, "missing joints", r, options.blend, report);
       if (contacts) VoteContacts(ctx, *contacts, joints, r, options.blend, report);
@@ -356,7 +388,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
           ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
                         options.synthesized_driver_weight, options.root_feature_weight, options.root_drives);
       if (driven.empty()) driven = all_keyed;
-      WeighTravel(db, options.travel_weight, driven);
+      GroupDrivers matched_on{WeighTravel(db, options.travel_weight, driven), {}};
+      if (!hanging[group.joints.back()] && legs_keyed && options.moving_travel_weight != options.travel_weight)
+        matched_on.moving = WeighTravel(db, options.moving_travel_weight, driven);
+      driven = matched_on.driven;
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
       first = false;
@@ -374,7 +409,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
         }
         positions = &cached->second;
       }
-      const GroupResult r = SynthesiseGroup(ctx, driven, hanging[group.joints.back()] ? driven : all_keyed, targets,
+      const GroupResult r = SynthesiseGroup(ctx, matched_on, hanging[group.joints.back()] ? driven : all_keyed, targets,
                                             blend, out, timer, positions);
       ReachLikeTheTakes(ctx, reaching, group.joints, r, blend, out);
       if (!hanging[group.joints.back()] && blend > 1)
@@ -406,7 +441,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     // must meet the root's rotation keys.
     const std::vector<int> root_channels = TravelChannels(db, s);
     Eigen::MatrixXd source = out;
-    const GroupResult r = SynthesiseGroup(ctx, all_keyed, all_keyed, keyed_channels, 1, source, timer);
+    const GroupResult r = SynthesiseGroup(ctx, {all_keyed, {}}, all_keyed, keyed_channels, 1, source, timer);
     // The keyed feet stand where the take lending them its detail stood: keys sparser than a
     // step (every 8 or 16 frames) miss much of each contact, and the feet slid there (legs16:
     // 18 cm/s during the capture's contacts on the tuning half).

@@ -104,6 +104,11 @@ struct FragmentFillOptions {
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
   // Hierarchical: each group's drivers weigh the root's planar velocity this many times more.
   double travel_weight = 6.0;
+  // ... but where the sketch keys the legs, an upper-body group weighs it this many times in the
+  // fragments whose root moves faster than moving_speed_m_per_s: the keyed legs carry the gait,
+  // and matching the pace as well drew the arms from takes of another gait.
+  double moving_travel_weight = 1.0;
+  double moving_speed_m_per_s = 0.6;
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
   CoverageOptions coverage;

@@ -152,17 +152,20 @@ int ChooseMasterChannel(const SketchSignals& sketch, int band, double rate_hz) {
   return best;
 }
 
-std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
-                                                   const std::vector<SketchFragment>& fragments,
-                                                   const std::vector<DrivenChannel>& driven,
-                                                   const FragmentFillOptions& options) {
-  const ScaledProblem p = Scale(mdb, sketch_match, fragments, driven, options);
-  const Eigen::VectorXf db_norms = p.database.rowwise().squaredNorm();
-  const Eigen::VectorXf query_norms = p.queries.rowwise().squaredNorm();
+namespace {
+
+// The K best candidates of each fragment among the database rows, from features scaled as
+// Scale does (one query row per fragment).
+std::vector<std::vector<Candidate>> BestMatches(const MatchingDatabase& mdb, const Eigen::MatrixXf& queries,
+                                                const Eigen::MatrixXf& database,
+                                                const std::vector<SketchFragment>& fragments,
+                                                const FragmentFillOptions& options) {
+  const Eigen::VectorXf db_norms = database.rowwise().squaredNorm();
+  const Eigen::VectorXf query_norms = queries.rowwise().squaredNorm();
   const int nf = static_cast<int>(fragments.size());
   std::vector<std::vector<Candidate>> result(nf);
   auto work = [&](int f) {
-    const Eigen::VectorXf dots = p.database * p.queries.row(f).transpose();
+    const Eigen::VectorXf dots = database * queries.row(f).transpose();
     std::vector<Candidate> admissible, any;
     admissible.reserve(mdb.fragments().size());
     for (Eigen::Index r = 0; r < dots.size(); ++r) {
@@ -177,6 +180,52 @@ std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, 
     result[f] = Best(admissible.empty() ? std::move(any) : std::move(admissible), options.candidates);
   };
   ForEachIndex(nf, options.threads, work);
+  return result;
+}
+
+}  // namespace
+
+std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
+                                                   const std::vector<SketchFragment>& fragments,
+                                                   const std::vector<DrivenChannel>& driven,
+                                                   const FragmentFillOptions& options) {
+  const ScaledProblem p = Scale(mdb, sketch_match, fragments, driven, options);
+  return BestMatches(mdb, p.queries, p.database, fragments, options);
+}
+
+std::vector<std::vector<Candidate>> MatchFragmentsBySet(const MatchingDatabase& mdb,
+                                                        const Eigen::MatrixXd& sketch_match,
+                                                        const std::vector<SketchFragment>& fragments,
+                                                        const std::vector<std::vector<DrivenChannel>>& sets,
+                                                        const std::vector<int>& set_of,
+                                                        const FragmentFillOptions& options) {
+  std::vector<std::vector<Candidate>> result(fragments.size());
+  if (sets.empty()) return result;
+  // The database is gathered once; sets over the same channels only rescale its columns.
+  const Scaling first = ScalingOf(mdb, sets.front());
+  const Eigen::MatrixXf gathered = ScaledDatabase(mdb, first);
+  for (size_t set = 0; set < sets.size(); ++set) {
+    std::vector<SketchFragment> some;
+    std::vector<size_t> index;
+    for (size_t i = 0; i < fragments.size(); ++i)
+      if (set_of[i] == static_cast<int>(set)) {
+        some.push_back(fragments[i]);
+        index.push_back(i);
+      }
+    if (some.empty()) continue;
+    const Scaling scaling = ScalingOf(mdb, sets[set]);
+    Eigen::MatrixXf other;
+    if (set > 0 && scaling.columns == first.columns) {
+      const Eigen::VectorXf ratio = scaling.factor.cwiseQuotient(first.factor);
+      other = gathered * ratio.replicate(mdb.samples(), 1).asDiagonal();
+    } else if (set > 0) {
+      other = ScaledDatabase(mdb, scaling);
+    }
+    const Eigen::MatrixXf& database = set > 0 ? other : gathered;
+    std::vector<std::vector<Candidate>> matched =
+        BestMatches(mdb, ScaledQueries(mdb, sketch_match, some, scaling, options), database, some, options);
+    for (size_t k = 0; k < index.size(); ++k) result[index[k]] = std::move(matched[k]);
+  }
   return result;
 }
 

@@ -51,6 +51,14 @@ std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, 
                                                    const std::vector<DrivenChannel>& driven,
                                                    const FragmentFillOptions& options);
 
+// MatchFragments with a driver set per fragment: fragment i is matched on sets[set_of[i]].
+std::vector<std::vector<Candidate>> MatchFragmentsBySet(const MatchingDatabase& mdb,
+                                                        const Eigen::MatrixXd& sketch_match,
+                                                        const std::vector<SketchFragment>& fragments,
+                                                        const std::vector<std::vector<DrivenChannel>>& sets,
+                                                        const std::vector<int>& set_of,
+                                                        const FragmentFillOptions& options);
+
 // Matching features scaled so that a squared Euclidean distance between two rows is the
 // distance MatchFragments measures: one row per sketch fragment, or per listed database
 // fragment (indices into MatchingDatabase::fragments(), rows in that order).

@@ -2,8 +2,8 @@
 # The held-out evaluations (each fills every take of the corpus or database) are `slow`: under
 # the sanitizers they take minutes each, and the smaller fill tests run the same code there.
 mocapfill_add_test(fill_tests
-  SLOW [=[^(Fill\.(SynthesisedLegsBlendFewerCandidates|StandingSketchesTakeTheirUpperBodyFromStandingTakes|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
-  CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|StandingSketchesTakeTheirUpperBodyFromStandingTakes|SynthesisedJointsAreAboutAsSmoothAsTheCapture|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
+  SLOW [=[^(Fill\.(SynthesisedLegsBlendFewerCandidates|MovingSketchesWithKeyedLegsTakeTheirUpperBodyByGaitNotPace|StandingSketchesTakeTheirUpperBodyFromStandingTakes|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
+  CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|MovingSketchesWithKeyedLegsTakeTheirUpperBodyByGaitNotPace|StandingSketchesTakeTheirUpperBodyFromStandingTakes|SynthesisedJointsAreAboutAsSmoothAsTheCapture|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc ${CMAKE_CURRENT_LIST_DIR}/local_regression_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/limb_reach_test.cc ${CMAKE_CURRENT_LIST_DIR}/consensus_weights_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/held_out_fill.cc

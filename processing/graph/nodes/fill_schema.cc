@@ -74,6 +74,10 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
       WithFlag(NumberOption("travel_weight", d.travel_weight, 0.0, false, 100.0, "",
                             "hierarchical: how many times more each group's matching weighs the root's planar velocity (stance feet move with it, arms swing with the pace)"),
                "travel"),
+      WithFlag(NumberOption("moving_travel_weight", d.moving_travel_weight, 0.0, false, 100.0, "",
+                            "hierarchical, sketches that key the legs: --travel for the upper body where the root "
+                            "moves faster than 0.6 m/s (the keyed legs carry the gait)"),
+               "travel-moving"),
       NumberOption("crossfade", d.crossfade, 0.0, false, 2.0, "",
                    "overlap of neighbouring fragments (share of their length) cross-faded instead of seam smoothing"),
       WithWords(BoolOption("root_drives", d.root_drives, "hierarchical: the keyed root's tilt always drives"), "true", "false"),
@@ -159,6 +163,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.fragment_band_hz = o.Number("fragment_band_hz");
   options.root_feature_weight = o.Number("root_weight");
   options.travel_weight = o.Number("travel_weight");
+  options.moving_travel_weight = o.Number("moving_travel_weight");
   options.crossfade = o.Number("crossfade");
   options.local_ridge = o.Number("local_ridge");
   options.limb_reach = o.Number("limb_reach");
