@@ -384,9 +384,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     for (int j = 0; j < db.num_joints(); ++j) keyed[j] = s.keyed[3 * j];
     bool first = true;
     for (const JointGroup& group : PlanGroups(db.skeleton(), fixed)) {
-      std::vector<DrivenChannel> driven =
-          ChooseDrivers(db, group, available, keyed, RootFeaturesKeyed(db, s), options.max_drivers,
-                        options.synthesized_driver_weight, options.root_feature_weight, options.root_drives);
+      const bool leg = hanging[group.joints.back()] && options.leg_drivers > 0;
+      std::vector<DrivenChannel> driven = ChooseDrivers(
+          db, group, available, keyed, RootFeaturesKeyed(db, s), leg ? options.leg_drivers : options.max_drivers,
+          options.synthesized_driver_weight, options.root_feature_weight, options.root_drives || leg);
       if (driven.empty()) driven = all_keyed;
       GroupDrivers matched_on{WeighTravel(db, options.travel_weight, driven), {}};
       if (!hanging[group.joints.back()] && legs_keyed && options.moving_travel_weight != options.travel_weight)

@@ -44,6 +44,7 @@ Status FragmentFillOptions::Validate() const {
   if (!(transition_gamma >= 0.0 && std::isfinite(transition_gamma)))
     return RangeError("transition_gamma", transition_gamma, "[0, inf)");
   if (max_drivers < 0) return RangeError("max_drivers", max_drivers, "[0, inf)");
+  if (leg_drivers < 0) return RangeError("leg_drivers", leg_drivers, "[0, inf)");
   if (!(synthesized_driver_weight >= 0.0 && synthesized_driver_weight <= 10.0))
     return RangeError("synthesized_driver_weight", synthesized_driver_weight, "[0, 10]");
   if (!(root_feature_weight >= 0.0 && root_feature_weight <= 100.0))

@@ -100,6 +100,11 @@ struct FragmentFillOptions {
   double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams
   int max_drivers = 3;             // hierarchical: driven joints per group (0 = all available)
   bool root_drives = false;        // hierarchical: the keyed root's tilt always among the drivers
+  // Hierarchical: driving joints of each leg chain (those hanging below the root), the keyed
+  // root first; 0: as the other groups. The pelvis carries the thighs, but its tilt ranked
+  // below the torso's joints in the correlation table, so the legs were matched on a torso
+  // that bends with the arms rather than on the hips they hang from.
+  int leg_drivers = 2;
   double synthesized_driver_weight = 1.0;  // weight of already synthesised drivers (keyed = 1)
   double root_feature_weight = 1.0;        // weight of the root features among the drivers
   // Hierarchical: each group's drivers weigh the root's planar velocity this many times more.

@@ -64,6 +64,8 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
            "context"),
       WithFlag(IntOption("max_drivers", d.max_drivers, 0, 1000, "hierarchical: driving joints per group (0 = all available)"),
            "drivers"),
+      IntOption("leg_drivers", d.leg_drivers, 0, 1000,
+                "hierarchical: driving joints of each synthesised leg, the keyed root first (0 = as --drivers)"),
       WithFlag(IntOption("db_phases", d.db_phases, 0, 1000, "key phases of the sketch-filtered database (0 = all)"), "phases"),
       WithFlag(IntOption("match_samples", d.match_samples, 2, 64, "samples per driven channel after time-stretching"),
            "samples"),
@@ -170,6 +172,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.consensus_iterations = o.Int("consensus");
   options.lead_detail = o.Number("lead_detail");
   options.root_drives = o.Bool("root_drives");
+  options.leg_drivers = o.Int("leg_drivers");
   options.synthesized_driver_weight = o.Number("synthesized_driver_weight");
   options.threads = o.Int("threads");
   options.coverage.blend = o.Bool("blend_poor_coverage");
