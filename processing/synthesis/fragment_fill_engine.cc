@@ -353,13 +353,13 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   std::vector<int> synthesized = JointChannels(joints);
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
   const std::vector<std::uint8_t> hanging = HangingJoints(db);
-  // Keyed legs are planted on their textured take's contacts too (VoteContacts below).
+  // Keyed legs carry the sketch's gait (moving_travel_weight) and, textured, are planted on
+  // their texture's take's contacts too (VoteContacts below).
   std::vector<int> keyed_legs;
-  bool legs_keyed = false;  // the sketch's legs carry its gait (moving_travel_weight)
-  for (int j = 0; j < db.num_joints(); ++j) legs_keyed = legs_keyed || (s.keyed[3 * j] && hanging[j]);
-  for (int j = 0; j < db.num_joints() && options.texture; ++j)
+  for (int j = 0; j < db.num_joints(); ++j)
     if (s.keyed[3 * j] && hanging[j]) keyed_legs.push_back(j);
-  if (!contacts && (!keyed_legs.empty() ||
+  const bool legs_keyed = !keyed_legs.empty();
+  if (!contacts && ((options.texture && legs_keyed) ||
                     std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; }))) {
     ASSIGN_OR_RETURN(DatabaseContacts found, FindDatabaseContacts(db, hanging));
     contacts = std::make_unique<DatabaseContacts>(std::move(found));
