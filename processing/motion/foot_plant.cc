@@ -82,6 +82,7 @@ std::vector<Vector3d> AnchorsOf(const MotionClip& clip, const std::vector<Vector
 struct JointContacts {
   std::vector<bool> down;
   std::vector<Vector3d> anchor;  // per frame, where down
+  std::vector<bool> keys_still;  // per frame: down because the keys have the foot still there
 };
 
 bool HasKeys(const std::vector<bool>& pinned) { return std::find(pinned.begin(), pinned.end(), true) != pinned.end(); }
@@ -116,6 +117,25 @@ void DropVotesTheKeysDeny(const std::vector<Vector3d>& track, const std::vector<
   }
 }
 
+// Frames from one key of the leg to the next where the joint is on its floor at both and moves
+// slower than `speed` from one to the other: the animator keyed it standing there.
+std::vector<bool> StillBetweenKeys(const std::vector<Vector3d>& track, const std::vector<double>& times,
+                                   const std::vector<bool>& pinned, double floor, double max_height, double speed) {
+  std::vector<bool> still(track.size(), false);
+  int previous = -1;
+  for (int f = 0; f < static_cast<int>(track.size()); ++f) {
+    if (!pinned[f]) continue;
+    if (previous >= 0) {
+      const Vector3d d = track[f] - track[previous];
+      const bool low = track[f].y() <= floor + max_height && track[previous].y() <= floor + max_height;
+      if (low && std::hypot(d.x(), d.z()) <= speed * (times[f] - times[previous]))
+        std::fill(still.begin() + previous, still.begin() + f + 1, true);
+    }
+    previous = f;
+  }
+  return still;
+}
+
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
                            const std::vector<bool>& pinned, const std::vector<bool>& given,
                            const FootPlantOptions& options, const std::string& side, const std::string& part,
@@ -127,10 +147,15 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
   std::vector<bool> voted = is_given ? given : std::vector<bool>(track.size(), false);
   if (is_given && keyed)
     DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s, voted);
-  JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, FloorOf(track, pinned), options.detection, &hips),
-                    std::vector<Vector3d>(track.size(), Vector3d::Zero())};
+  const double floor = FloorOf(track, pinned);
+  JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, floor, options.detection, &hips),
+                    std::vector<Vector3d>(track.size(), Vector3d::Zero()), std::vector<bool>(track.size(), false)};
   if (is_given && keyed)
     for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || voted[f];
+  if (keyed && options.key_still_m_per_s > 0.0)
+    out.keys_still = StillBetweenKeys(track, times, pinned, floor, options.detection.max_height_m,
+                                      options.key_still_m_per_s);
+  for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || out.keys_still[f];
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
     double farthest = 0.0;
@@ -138,20 +163,26 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
       const Vector3d d = anchors[f - first] - track[f];
       farthest = std::max(farthest, std::hypot(d.x(), d.z()));
     }
+    const auto marked = [first = first, last = last](const std::vector<bool>& flags) {
+      return std::find(flags.begin() + first, flags.begin() + last + 1, true) != flags.begin() + last + 1;
+    };
     // A foot this far from where it would be held is not standing (a swing foot passing low
-    // and slow near a key): holding it would drag the leg and pop where the hold ends.
-    const double limit = is_given && keyed ? options.max_keyed_given_correction_m
-                         : is_given        ? options.max_given_correction_m
-                         : part == "toe"   ? options.max_toe_correction_m
-                                           : options.max_correction_m;
+    // and slow near a key): holding it would drag the leg and pop where the hold ends. Where
+    // the keys have it still, the fill strayed and the keys hold.
+    const bool keys_still = marked(out.keys_still);
+    const double limit = keys_still            ? INFINITY
+                         : is_given && keyed ? options.max_keyed_given_correction_m
+                         : is_given          ? options.max_given_correction_m
+                         : part == "toe"     ? options.max_toe_correction_m
+                                             : options.max_correction_m;
     if (farthest > limit) {
       std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
       ++report.contacts_skipped;
       continue;
     }
     std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
-    const bool from_takes = std::find(voted.begin() + first, voted.begin() + last + 1, true) != voted.begin() + last + 1;
-    FootContact c{side, part, times[first], times[last], 0, 0.0, from_takes ? "takes" : "fill"};
+    FootContact c{side, part, times[first], times[last], 0, 0.0,
+                  keys_still ? "keys" : marked(voted) ? "takes" : "fill"};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
     report.contacts.push_back(c);
   }
@@ -200,8 +231,10 @@ Correction HoldAt(int f, const LegTracks& tracks, const JointContacts& heel, con
     c.any = true;
   }
   // Held along the ground only: the stance leg is nearly straight, where a centimetre of height
-  // asks for several of knee (knees shook around the keys), while sliding is horizontal.
-  c.move.y() = 0.0;
+  // asks for several of knee (knees shook around the keys), while sliding is horizontal. Where
+  // the keys have the foot still, its height is theirs too (the fill lifted it in a step).
+  const bool keys_height = heel.down[f] ? heel.keys_still[f] : toe_down && toe->keys_still[f];
+  if (!keys_height) c.move.y() = 0.0;
   return c;
 }
 

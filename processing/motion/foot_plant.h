@@ -61,6 +61,11 @@ struct FootPlantOptions {
   // `keyed_standing_speed_m_per_s` (capture's standing limit) they do not hold it.
   double max_keyed_given_correction_m = 0.2;
   double keyed_standing_speed_m_per_s = 0.3;
+  // A keyed foot on the ground at two consecutive keys of its leg that moves slower than this
+  // from one to the other stands between them, height included, however far the fill strays:
+  // keys sparser than a step let the texture's take step there (keys every 16 frames: a
+  // standing wave's feet lifted 8 cm and slid at 54 cm/s between keys that had them still).
+  double key_still_m_per_s = 0.05;
   // Corrections that stretch the leg into the last this share of its length approach full
   // length smoothly rather than snapping the knee straight (0: plain two-bone IK).
   double soft_reach = 0.05;
@@ -76,7 +81,9 @@ struct FootContact {
   double end_s = 0.0;
   int keys = 0;                   // keys of the leg inside the contact (they fix its anchor)
   double max_correction_m = 0.0;  // largest IK move of the foot joint inside the contact
-  std::string found_on = "fill";  // "fill": on the motion being planted; "takes": given with the leg
+  // "fill": on the motion being planted; "takes": given with the leg; "keys": the leg's keys
+  // have the foot still on the ground (FootPlantOptions::key_still_m_per_s).
+  std::string found_on = "fill";
 };
 
 struct PlantedLeg {
