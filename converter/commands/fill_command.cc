@@ -69,11 +69,14 @@ void PrintSummary(const SketchFillResult& result) {
   std::fprintf(stderr, "  keys: mean error %.4f deg, max %.4f deg (read back from the output, at the keys' own times)\n",
                result.key_error_mean_deg, result.key_error_max_deg);
   if (!result.feet.contacts.empty()) {
-    const auto from_takes = std::count_if(result.feet.contacts.begin(), result.feet.contacts.end(),
-                                          [](const FootContact& c) { return c.found_on == "takes"; });
-    std::fprintf(stderr, "  feet: %zu contacts held (%td where the matched takes stood), %d leg-frames, largest "
-                 "correction %.1f cm\n",
-                 result.feet.contacts.size(), from_takes, result.feet.frames_held, 100.0 * result.feet.max_correction_m);
+    const auto found_on = [&](const char* source) {
+      return std::count_if(result.feet.contacts.begin(), result.feet.contacts.end(),
+                           [&](const FootContact& c) { return c.found_on == source; });
+    };
+    std::fprintf(stderr, "  feet: %zu contacts held (%td where the matched takes stood, %td where the keys have the "
+                 "foot still), %d leg-frames, largest correction %.1f cm\n",
+                 result.feet.contacts.size(), found_on("takes"), found_on("keys"), result.feet.frames_held,
+                 100.0 * result.feet.max_correction_m);
   }
   if (r.coverage.measured && !r.coverage.fragments.empty()) {
     const auto less = [](const FragmentCoverage& a, const FragmentCoverage& b) { return a.unexplained < b.unexplained; };
