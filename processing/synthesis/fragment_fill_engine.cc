@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "processing/core/kinematics.h"
+#include "processing/core/smoothstep.h"
 #include "processing/filtering/pyramid.h"
 #include "processing/synthesis/assembly.h"
 #include "processing/synthesis/baselines.h"
@@ -24,6 +25,9 @@
 namespace mocapfill {
 
 namespace {
+
+// A still root's travel detail fades back in over this beyond the still keys (a held foot's fade).
+constexpr double kStillRootRampS = 0.1;
 
 std::vector<int> RootFeatureChannels(const MotionDatabase& db) {
   std::vector<int> channels;
@@ -250,6 +254,33 @@ std::vector<int> TravelChannels(const MotionDatabase& db, const SketchSignals& s
   return {db.RootFeatureChannel(kRootForward), db.RootFeatureChannel(kRootLateral)};
 }
 
+// Where the keyed root stands still from one key to the next (planar speed below `speed`), its
+// travel keeps the keys' low band there (`low`), without the lead's detail in `out`, which
+// fades back in over `ramp` frames beyond: the lead's hips sway at its own amplitude, pinned at
+// every key, and rocked a still sketch's whole body in the keys' rhythm (a standing wave: the
+// hips 1 cm off between keys that had them within 0.3 mm).
+void KeepStillRootStill(const SketchSignals& s, const std::vector<int>& travel, double speed, int ramp,
+                        const Eigen::MatrixXd& low, Eigen::MatrixXd& out) {
+  if (speed <= 0.0 || travel.size() != 2) return;
+  const std::vector<int>& keys = s.key_frames[travel[0]];
+  std::vector<int> still_frames;
+  for (size_t k = 0; k + 1 < keys.size(); ++k) {
+    double fastest = 0.0;
+    for (int f = keys[k]; f <= keys[k + 1]; ++f)
+      fastest = std::max(fastest, std::hypot(s.values(f, travel[0]), s.values(f, travel[1])));
+    if (fastest < speed)
+      for (int f = keys[k]; f <= keys[k + 1]; ++f) still_frames.push_back(f);
+  }
+  if (still_frames.empty()) return;
+  std::vector<double> detail(out.rows(), 1.0);
+  for (int f : still_frames)
+    for (int d = -ramp; d <= ramp; ++d)
+      if (f + d >= 0 && f + d < out.rows())
+        detail[f + d] = std::min(detail[f + d], Smoothstep(double(std::abs(d)) / (ramp + 1)));
+  for (int f = 0; f < out.rows(); ++f)
+    for (int c : travel) out(f, c) = low(f, c) + detail[f] * (out(f, c) - low(f, c));
+}
+
 // Blends poorly covered stretches towards the prior: synthesised channels towards the mean
 // pose or the nearest database pose, keyed ones towards the sketch (their texture fades;
 // keys stay exact, the sketch holds them), each with its own weight. The keyed travel fades
@@ -455,8 +486,12 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     }
     std::vector<int> textured = keyed_channels;
     textured.insert(textured.end(), root_channels.begin(), root_channels.end());
+    Eigen::MatrixXd travel_low = out;
+    LowBandChannels(s.values, root_channels, TextureBandCount(s.key_spacing, rate), rate, travel_low);
     TextureChannels(s.values, source, textured, TextureBandCount(s.key_spacing, rate), rate, out,
                     options.texture_finest_band);
+    KeepStillRootStill(s, root_channels, options.still_root_m_per_s,
+                       static_cast<int>(std::lround(kStillRootRampS * rate)), travel_low, out);
     if (options.repin_keys) RepinKeys(s.values, s.key_frames, keyed_channels, out);
     timer.Mark("texture");
   }

@@ -55,6 +55,8 @@ Status FragmentFillOptions::Validate() const {
     return RangeError("moving_travel_weight", moving_travel_weight, "[0, 100]");
   if (!(moving_speed_m_per_s >= 0.0 && std::isfinite(moving_speed_m_per_s)))
     return RangeError("moving_speed_m_per_s", moving_speed_m_per_s, "[0, inf)");
+  if (!(still_root_m_per_s >= 0.0 && std::isfinite(still_root_m_per_s)))
+    return RangeError("still_root_m_per_s", still_root_m_per_s, "[0, inf)");
   if (db_phases < 0) return RangeError("db_phases", db_phases, "[0, inf)");
   if (threads < 0) return RangeError("threads", threads, "[0, inf)");
   if (!(coverage.poor_share > 0.0 && coverage.poor_share < 1.0))

@@ -114,6 +114,9 @@ struct FragmentFillOptions {
   // and matching the pace as well drew the arms from takes of another gait.
   double moving_travel_weight = 1.0;
   double moving_speed_m_per_s = 0.6;
+  // Between two keys of the root that have it still (planar speed below this, a standing
+  // foot's), the keyed travel keeps its keys' low band, without the lead's detail; 0: never.
+  double still_root_m_per_s = 0.02;
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
   CoverageOptions coverage;

@@ -72,6 +72,9 @@ TEST(FillOptions, ValidateRejectsEveryOutOfRangeField) {
   o.moving_speed_m_per_s = std::nan("");
   EXPECT_FALSE(o.Validate().ok());
   o = {};
+  o.still_root_m_per_s = -0.01;
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
   o.leg_drivers = -1;
   EXPECT_FALSE(o.Validate().ok());
   EXPECT_EQ(*ParseFillMethod("nn"), FillMethod::kNearest);
