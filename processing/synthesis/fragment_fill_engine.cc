@@ -255,12 +255,12 @@ std::vector<int> TravelChannels(const MotionDatabase& db, const SketchSignals& s
 }
 
 // Where the keyed root stands still from one key to the next (planar speed below `speed`), its
-// travel keeps the keys' low band there (`low`), without the lead's detail in `out`, which
-// fades back in over `ramp` frames beyond: the lead's hips sway at its own amplitude, pinned at
-// every key, and rocked a still sketch's whole body in the keys' rhythm (a standing wave: the
-// hips 1 cm off between keys that had them within 0.3 mm).
-void KeepStillRootStill(const SketchSignals& s, const std::vector<int>& travel, double speed, int ramp,
-                        const Eigen::MatrixXd& low, Eigen::MatrixXd& out) {
+// travel keeps the keys' low band there (the texture's `bands`), without the lead's detail in
+// `out`, which fades back in over `ramp` frames beyond: the lead's hips sway at its own
+// amplitude, pinned at every key, and rocked a still sketch's whole body in the keys' rhythm (a
+// standing wave: the hips 1 cm off between keys that had them within 0.3 mm).
+void KeepStillRootStill(const SketchSignals& s, const std::vector<int>& travel, double speed, int ramp, int bands,
+                        double rate, Eigen::MatrixXd& out) {
   if (speed <= 0.0 || travel.size() != 2) return;
   const std::vector<int>& keys = s.key_frames[travel[0]];
   std::vector<int> still_frames;
@@ -272,6 +272,8 @@ void KeepStillRootStill(const SketchSignals& s, const std::vector<int>& travel, 
       for (int f = keys[k]; f <= keys[k + 1]; ++f) still_frames.push_back(f);
   }
   if (still_frames.empty()) return;
+  Eigen::MatrixXd low = out;
+  LowBandChannels(s.values, travel, bands, rate, low);
   std::vector<double> detail(out.rows(), 1.0);
   for (int f : still_frames)
     for (int d = -ramp; d <= ramp; ++d)
@@ -486,12 +488,10 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     }
     std::vector<int> textured = keyed_channels;
     textured.insert(textured.end(), root_channels.begin(), root_channels.end());
-    Eigen::MatrixXd travel_low = out;
-    LowBandChannels(s.values, root_channels, TextureBandCount(s.key_spacing, rate), rate, travel_low);
-    TextureChannels(s.values, source, textured, TextureBandCount(s.key_spacing, rate), rate, out,
-                    options.texture_finest_band);
+    const int bands = TextureBandCount(s.key_spacing, rate);
+    TextureChannels(s.values, source, textured, bands, rate, out, options.texture_finest_band);
     KeepStillRootStill(s, root_channels, options.still_root_m_per_s,
-                       static_cast<int>(std::lround(kStillRootRampS * rate)), travel_low, out);
+                       static_cast<int>(std::lround(kStillRootRampS * rate)), bands, rate, out);
     if (options.repin_keys) RepinKeys(s.values, s.key_frames, keyed_channels, out);
     timer.Mark("texture");
   }
