@@ -349,6 +349,16 @@ std::vector<std::uint8_t> HangingJoints(const MotionDatabase& db) {
   return hanging;
 }
 
+// The motion root and the leg chains: every joint that is hanging or carries one (the thighs).
+std::vector<std::uint8_t> LowerBody(const MotionDatabase& db, const std::vector<std::uint8_t>& hanging) {
+  std::vector<std::uint8_t> lower(hanging);
+  for (int j = 0; j < db.num_joints(); ++j)
+    if (hanging[j])
+      for (int p = db.skeleton().parent(j); p != kNoParent && !lower[p]; p = db.skeleton().parent(p)) lower[p] = 1;
+  if (db.root_joint() >= 0) lower[db.root_joint()] = 1;
+  return lower;
+}
+
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
                          std::unique_ptr<ArmReach>& arm_reach, GroupPositionCache& group_positions,
@@ -489,7 +499,23 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     std::vector<int> textured = keyed_channels;
     textured.insert(textured.end(), root_channels.begin(), root_channels.end());
     const int bands = TextureBandCount(s.key_spacing, rate);
-    TextureChannels(s.values, source, textured, bands, rate, out, options.texture_finest_band);
+    // Only the upper body's detail follows the sketch's liveliness: the legs' carries the steps
+    // that keys every 8 or 16 frames alias, and the hips' is the only jerk a sketch of the root
+    // alone gets, which was already smoother than capture (docs/fill.md, Texture).
+    ActivityMatch activity;
+    Eigen::MatrixXd source_as_keyed;
+    if (options.texture_activity_window_s > 0.0) {
+      const std::vector<std::uint8_t> lower = LowerBody(db, hanging);
+      for (int c : keyed_channels)
+        if (!lower[c / 3]) activity.channels.push_back(c);
+      if (!activity.channels.empty()) {
+        source_as_keyed = source;
+        for (int c : activity.channels) LerpBetweenKeys(source_as_keyed.middleCols(c, 1), s.key_frames[c]);
+        activity.source_as_keyed = &source_as_keyed;
+        activity.window_s = options.texture_activity_window_s;
+      }
+    }
+    TextureChannels(s.values, source, textured, bands, rate, out, options.texture_finest_band, activity);
     KeepStillRootStill(s, root_channels, options.still_root_m_per_s,
                        static_cast<int>(std::lround(kStillRootRampS * rate)), bands, rate, out);
     if (options.repin_keys) RepinKeys(s.values, s.key_frames, keyed_channels, out);

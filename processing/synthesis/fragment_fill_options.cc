@@ -55,6 +55,8 @@ Status FragmentFillOptions::Validate() const {
     return RangeError("moving_travel_weight", moving_travel_weight, "[0, 100]");
   if (!(moving_speed_m_per_s >= 0.0 && std::isfinite(moving_speed_m_per_s)))
     return RangeError("moving_speed_m_per_s", moving_speed_m_per_s, "[0, inf)");
+  if (!(texture_activity_window_s >= 0.0 && std::isfinite(texture_activity_window_s)))
+    return RangeError("texture_activity_window_s", texture_activity_window_s, "[0, inf)");
   if (!(still_root_m_per_s >= 0.0 && std::isfinite(still_root_m_per_s)))
     return RangeError("still_root_m_per_s", still_root_m_per_s, "[0, inf)");
   if (db_phases < 0) return RangeError("db_phases", db_phases, "[0, inf)");

@@ -117,6 +117,10 @@ struct FragmentFillOptions {
   // Between two keys of the root that have it still (planar speed below this, a standing
   // foot's), the keyed travel keeps its keys' low band, without the lead's detail; 0: never.
   double still_root_m_per_s = 0.02;
+  // Keyed joints of the upper body take their texture's detail scaled down where the sketch
+  // moves them less than the take lending it does, both seen through the keys, over this window
+  // (texturing/activity_gain.h): a timid wave took a lively take's tremor; 0: detail unscaled.
+  double texture_activity_window_s = 1.0;
   int db_phases = 0;   // key phases of the sketch-filtered database (0 = every phase)
   int threads = 0;     // matching threads (0 = hardware concurrency)
   CoverageOptions coverage;

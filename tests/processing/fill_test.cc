@@ -17,6 +17,7 @@
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/sketch_signals.h"
+#include "processing/texturing/activity_gain.h"
 #include "processing/texturing/texture_channels.h"
 #include "tests/processing/held_out_fill.h"
 #include "tests/support/default_db.h"
@@ -73,6 +74,9 @@ TEST(FillOptions, ValidateRejectsEveryOutOfRangeField) {
   EXPECT_FALSE(o.Validate().ok());
   o = {};
   o.still_root_m_per_s = -0.01;
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
+  o.texture_activity_window_s = std::nan("");
   EXPECT_FALSE(o.Validate().ok());
   o = {};
   o.leg_drivers = -1;
@@ -144,6 +148,25 @@ TEST(SketchFilter, LerpsBetweenKeysAndHoldsOutside) {
   EXPECT_DOUBLE_EQ(m(9, 0), 3.0);
   EXPECT_EQ(PhaseKeys(10, 4, 1), (std::vector<int>{0, 1, 5, 9}));
   EXPECT_EQ(TextureBandCount(8, 30.0), 3);  // L0-L2 lie above 1.875 Hz
+}
+
+// A channel the sketch moves half as fast as the take lending it detail takes half its detail;
+// one it moves as fast or faster, all of it; where both stand still, about all of it.
+TEST(Texture, ActivityGainIsTheSketchsSpeedOverTheTakesAtMostOne) {
+  const double rate = 30.0;
+  Eigen::MatrixXd sketch(90, 3), source(90, 3);
+  for (int t = 0; t < 90; ++t) {
+    const double wave = std::sin(2.0 * M_PI * 1.0 * t / rate);  // 1 Hz, 0.5 rad amplitude below
+    sketch.row(t) << 0.25 * wave, 0.5 * wave, 0.0;
+    source.row(t) << 0.5 * wave, 0.25 * wave, 0.0;
+  }
+  const Eigen::MatrixXd gain = ActivityGain(sketch, source, rate, 1.0, 0.01);
+  ASSERT_EQ(gain.rows(), 90);
+  const double mean_speed = 0.5 * 2.0 * M_PI * 2.0 / M_PI;  // |d/dt| of 0.5 sin(2 pi t) averaged: 2 rad/s
+  EXPECT_NEAR(gain(45, 0), (0.5 * mean_speed + 0.01) / (mean_speed + 0.01), 0.02);
+  EXPECT_DOUBLE_EQ(gain(45, 1), 1.0);
+  EXPECT_DOUBLE_EQ(gain(45, 2), 1.0);
+  EXPECT_EQ(ActivityGain(sketch.topRows(1), source.topRows(1), rate, 1.0, 0.01), Eigen::MatrixXd::Ones(1, 3));
 }
 
 TEST(Hierarchy, GroupsBandaiUpperBodyIntoLimbChainsOutwardFromTheKeys) {
@@ -472,6 +495,37 @@ TEST(Fill, LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures) {
     EXPECT_LT(mpjpe[1], 1.005 * mpjpe[0]) << scenario;
     EXPECT_LT(key_error, 0.01) << scenario;
   }
+}
+
+// Timid gestures of a style the database lacks (not-confident), hips and arms keyed every 8
+// frames: their keyed arms take the detail of livelier takes scaled to how much their
+// keys move them (texture_activity_window_s), so they tremble less, nearer the capture,
+// and come nearer it between keys; keys stay exact.
+TEST(Fill, TimidGesturesTakeDetailAsLivelyAsTheirKeys) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const MotionDatabase& db = testing::BandaiDbWithout("not-confident");
+  FillEngine engine(db);
+  std::vector<FillOptions> variants(2);
+  variants[0].texture_activity_window_s = 0.0;
+  const std::vector<std::string> takes = {"bow_not-confident_001", "bye_not-confident_001",
+                                          "byebye_not-confident_001", "guide_not-confident_001"};
+  Result<std::vector<std::vector<FillMetrics>>> m = testing::FillHeldOutTakes(engine, db, "root-arms", takes, variants);
+  ASSERT_TRUE(m.ok()) << m.status().message();
+  std::vector<double> jitter(2, 0.0), between(2, 0.0);
+  double key_error = 0.0;
+  for (const std::vector<FillMetrics>& take : *m)
+    for (size_t v = 0; v < 2; ++v) {
+      jitter[v] += take[v].jitter_ratio / takes.size();
+      between[v] += take[v].mpjpe_keyed_between_cm / takes.size();
+      key_error = std::max(key_error, take[v].key_error_max_deg);
+    }
+  std::printf("root-arms: jitter ratio %.3f with the takes' detail unscaled, %.3f scaled; keyed joints between keys "
+              "%.3f / %.3f cm\n", jitter[0], jitter[1], between[0], between[1]);
+  EXPECT_GT(variants[1].texture_activity_window_s, 0.0);
+  // Measured 1.432 -> 1.358, 5.958 -> 5.940 cm.
+  EXPECT_LT(jitter[1], 0.97 * jitter[0]);
+  EXPECT_LT(between[1], between[0]);
+  EXPECT_LT(key_error, 0.01);
 }
 
 // With the legs synthesised (the upper-body scenario: hips, torso, head and arms keyed every 8
