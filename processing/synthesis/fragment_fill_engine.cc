@@ -501,7 +501,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     const int bands = TextureBandCount(s.key_spacing, rate);
     // Only the upper body's detail follows the sketch's liveliness: the legs' carries the steps
     // that keys every 8 or 16 frames alias, and the hips' is the only jerk a sketch of the root
-    // alone gets, which was already smoother than capture (docs/fill.md, Texture).
+    // alone gets, which was already smoother than capture (docs/fill.md, step 8).
     ActivityMatch activity;
     Eigen::MatrixXd source_as_keyed;
     if (options.texture_activity_window_s > 0.0) {
