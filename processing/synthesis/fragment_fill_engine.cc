@@ -11,6 +11,7 @@
 #include "processing/synthesis/consensus_weights.h"
 #include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill_stages.h"
+#include "processing/synthesis/gait_sway.h"
 #include "processing/synthesis/fragment_matching.h"
 #include "processing/synthesis/ground_contacts.h"
 #include "processing/synthesis/hierarchical/hierarchy.h"
@@ -45,6 +46,8 @@ struct FragmentContext {
   std::vector<SketchFragment> fragments;
   Eigen::VectorXf sigma;
   std::vector<int> moving;  // per fragment: 1 where the sketch's root moves (TravellingFragments)
+  Eigen::VectorXd sketch_sway;                // LateralSway of the keyed root (gait_sway.h), else empty
+  const Eigen::VectorXd* db_sway = nullptr;  // the database's, with sketch_sway
 };
 
 // A group's matching drivers: `driven`, or `moving` (when not empty) in the fragments where the
@@ -52,6 +55,7 @@ struct FragmentContext {
 struct GroupDrivers {
   std::vector<DrivenChannel> driven;
   std::vector<DrivenChannel> moving;
+  bool by_sway = false;  // moving fragments rank their candidates by the hips' sway too (gait_sway.h)
 };
 
 // Matches, joins and assembles one target set; returns the joined leads and candidates.
@@ -135,6 +139,9 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const GroupDrivers& driv
   else
     r.candidates = MatchFragmentsBySet(*ctx.mdb, match, ctx.fragments, {drivers.driven, drivers.moving}, ctx.moving,
                                        *ctx.options);
+  if (drivers.by_sway && ctx.db_sway)
+    RankBySway(*ctx.mdb, *ctx.db, ctx.fragments, ctx.moving, ctx.sketch_sway, *ctx.db_sway,
+               ctx.options->leg_sway_weight, r.candidates);
   timer.Mark("match");
   JoinInputs join{ctx.db, ctx.mdb, &r.candidates, targets, ctx.sigma, ctx.options->transition_gamma};
   r.leads = JoinCandidates(ctx.options->join, join);
@@ -362,13 +369,13 @@ std::vector<std::uint8_t> LowerBody(const MotionDatabase& db, const std::vector<
 Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatabase>& cache,
                          CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
                          std::unique_ptr<ArmReach>& arm_reach, GroupPositionCache& group_positions,
-                         const SketchSignals& s,
+                         Eigen::VectorXd& db_sway, const SketchSignals& s,
                          const FragmentFillOptions& options, Eigen::MatrixXd& out, FragmentFillReport& report,
                          StageTimer& timer) {
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
-  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db), {}};
+  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db), {}, {}, nullptr};
   ASSIGN_OR_RETURN(ctx.fragments, FragmentSketch(s, master, band, rate));
   ctx.moving = TravellingFragments(db, s, ctx.fragments, options.moving_speed_m_per_s);
   report.master_channel = db.ChannelName(master);
@@ -402,8 +409,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   for (int j = 0; j < db.num_joints(); ++j)
     if (s.keyed[3 * j] && hanging[j]) keyed_legs.push_back(j);
   const bool legs_keyed = !keyed_legs.empty();
-  if (!contacts && ((options.texture && legs_keyed) ||
-                    std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; }))) {
+  const bool legs_synthesized = std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; });
+  if (!contacts && ((options.texture && legs_keyed) || legs_synthesized)) {
     ASSIGN_OR_RETURN(DatabaseContacts found, FindDatabaseContacts(db, hanging));
     contacts = std::make_unique<DatabaseContacts>(std::move(found));
     timer.Mark("db_contacts");
@@ -413,6 +420,18 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     timer.Mark("arm_reach");
   }
   const ArmReach* reaching = options.limb_reach > 0.0 ? arm_reach.get() : nullptr;
+  // Synthesised legs under keyed hips step on the foot the hips sway over (gait_sway.h).
+  if (options.leg_sway_weight > 0.0 && legs_synthesized && RootFeaturesKeyed(db, s)) {
+    const int half_window = static_cast<int>(std::lround(kSwayHalfWindowS * rate));
+    if (db_sway.size() != db.num_frames()) {
+      db_sway = DatabaseSway(db, half_window);
+      timer.Mark("db_sway");
+    }
+    Eigen::MatrixXd features(s.frames, kNumRootFeatures);
+    for (int k = 0; k < kNumRootFeatures; ++k) features.col(k) = s.values.col(db.RootFeatureChannel(k));
+    ctx.sketch_sway = LateralSway(features, rate, half_window);
+    ctx.db_sway = &db_sway;
+  }
   const std::vector<DrivenChannel> all_keyed = AllKeyedDrivers(db, s, options);
   Eigen::MatrixXd lead_detail = Eigen::MatrixXd::Zero(out.rows(), out.cols());
   if (options.method == FillMethod::kFragment) {
@@ -435,6 +454,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       GroupDrivers matched_on{WeighTravel(db, options.travel_weight, driven), {}};
       if (!hanging[group.joints.back()] && legs_keyed && options.moving_travel_weight != options.travel_weight)
         matched_on.moving = WeighTravel(db, options.moving_travel_weight, driven);
+      matched_on.by_sway = hanging[group.joints.back()] != 0;
       driven = matched_on.driven;
       std::vector<int> targets = JointChannels(group.joints);
       if (first) targets.insert(targets.end(), root_targets.begin(), root_targets.end());
@@ -556,7 +576,8 @@ Result<MotionClip> FragmentFillEngine::Fill(const MotionClip& sketch, const Frag
   } else if (options.method == FillMethod::kNearest) {
     FillNearest(db_, s, options, out);
   } else {
-    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arm_reach_, group_positions_, s, options, out, report, timer));
+    RETURN_IF_ERROR(RunFragmentMethod(db_, cache_, yardstick_, contacts_, arm_reach_, group_positions_, db_sway_, s,
+                                      options, out, report, timer));
   }
   timer.Mark(options.method == FillMethod::kMean ? "mean_pose" : fragment_based ? "assemble" : "match");
   const bool textured = fragment_based && options.texture;

@@ -67,6 +67,7 @@ class FragmentFillEngine {
   std::unique_ptr<DatabaseContacts> contacts_;  // the takes' foot contacts, found on first need
   std::unique_ptr<ArmReach> arm_reach_;         // the rig's arms (limb_reach.h), found on first need
   GroupPositionCache group_positions_;          // per upper-body group (consensus_weights.h), on first need
+  Eigen::VectorXd db_sway_;                     // per database frame, LateralSway (gait_sway.h), on first need
 };
 
 }  // namespace mocapfill

@@ -89,6 +89,11 @@ struct FragmentFillOptions {
   // bands (those synthesized_finest_band takes off the blend): the average of many takes cancels
   // their detail (its jerk was 0.54 - 0.67 of the capture's), one take has it; 0: none.
   double lead_detail = 0.7;
+  // Hierarchical: where the keyed root moves, a synthesised leg's candidates whose hips sway
+  // over the other foot than the sketch's count as this much farther (distance times
+  // 1 + weight * (1 - agreement) / 2, agreement the cosine of the sways; gait_sway.h): they
+  // stepped in anti-phase, planting a foot where the capture's swung; 0: matched without.
+  double leg_sway_weight = 10.0;
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching

@@ -42,4 +42,19 @@ Result<ProudSums> FillProudTakesByCategory(FillEngine& engine, const MotionDatab
   return sums;
 }
 
+VariantScores ScoreVariants(const std::vector<std::vector<FillMetrics>>& metrics) {
+  const size_t variants = metrics.empty() ? 0 : metrics[0].size();
+  VariantScores scores{std::vector<double>(variants, 0.0), std::vector<double>(variants, 0.0), 0.0};
+  std::vector<double> contacts(variants, 0.0);
+  for (const std::vector<FillMetrics>& take : metrics)
+    for (size_t v = 0; v < variants; ++v) {
+      scores.mpjpe_cm[v] += take[v].mpjpe_unkeyed_cm / metrics.size();
+      scores.skate_cm_per_s[v] += take[v].foot_skate_cm_per_s * take[v].foot_contact_frames;
+      contacts[v] += take[v].foot_contact_frames;
+      scores.key_error_max_deg = std::max(scores.key_error_max_deg, take[v].key_error_max_deg);
+    }
+  for (size_t v = 0; v < variants; ++v) scores.skate_cm_per_s[v] /= std::max(1.0, contacts[v]);
+  return scores;
+}
+
 }  // namespace mocapfill::testing

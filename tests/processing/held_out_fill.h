@@ -33,4 +33,13 @@ struct ProudSums {
 Result<ProudSums> FillProudTakesByCategory(FillEngine& engine, const MotionDatabase& db,
                                            const std::vector<FillOptions>& variants);
 
+// Per variant, over the takes of FillHeldOutTakes' metrics[take][variant]: the unkeyed MPJPE
+// averaged over the takes (cm), the feet's skating pooled over the capture's contact frames
+// (cm/s), and the largest key error over every fill (degrees).
+struct VariantScores {
+  std::vector<double> mpjpe_cm, skate_cm_per_s;
+  double key_error_max_deg = 0.0;
+};
+VariantScores ScoreVariants(const std::vector<std::vector<FillMetrics>>& metrics);
+
 }  // namespace mocapfill::testing

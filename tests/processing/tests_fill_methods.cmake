@@ -2,11 +2,11 @@
 # The held-out evaluations (each fills every take of the corpus or database) are `slow`: under
 # the sanitizers they take minutes each, and the smaller fill tests run the same code there.
 mocapfill_add_test(fill_tests
-  SLOW [=[^(Fill\.(SynthesisedLegsBlendFewerCandidates|SynthesisedLegsAreMatchedOnTheHipsTheyHangFrom|MovingSketchesWithKeyedLegsTakeTheirUpperBodyByGaitNotPace|StandingSketchesTakeTheirUpperBodyFromStandingTakes|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures|TimidGesturesTakeDetailAsLivelyAsTheirKeys)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
-  CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|SynthesisedLegsAreMatchedOnTheHipsTheyHangFrom|MovingSketchesWithKeyedLegsTakeTheirUpperBodyByGaitNotPace|StandingSketchesTakeTheirUpperBodyFromStandingTakes|SynthesisedJointsAreAboutAsSmoothAsTheCapture|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures|TimidGesturesTakeDetailAsLivelyAsTheirKeys|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutLocomotion|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes)$]=]
+  SLOW [=[^(Fill\.(SynthesisedLegsBlendFewerCandidates|SynthesisedLegsAreMatchedOnTheHipsTheyHangFrom|MovingSketchesWithKeyedLegsTakeTheirUpperBodyByGaitNotPace|StandingSketchesTakeTheirUpperBodyFromStandingTakes|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures|TimidGesturesTakeDetailAsLivelyAsTheirKeys)|LocalRegression\.LowersTheErrorOfHeldOutTakes|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes|GaitSway\.SynthesisedLegsStepOnTheFootTheHipsSwayOver)$]=]
+  CORPUS [=[^(Fill\.(HierarchicalBeatsTheMeanPoseOnACapturedWalkOfAnUnseenStyle|SynthesisedLegsAreMatchedOnTheHipsTheyHangFrom|MovingSketchesWithKeyedLegsTakeTheirUpperBodyByGaitNotPace|StandingSketchesTakeTheirUpperBodyFromStandingTakes|SynthesisedJointsAreAboutAsSmoothAsTheCapture|LeadDetailBringsTheJitterOfHeldOutTakesTowardsTheCaptures|TimidGesturesTakeDetailAsLivelyAsTheirKeys|SynthesisedLegsBlendFewerCandidates)|LocalRegression\.LowersTheErrorOfHeldOutTakes|LimbReach\.LowersTheErrorOfHeldOutTakes|ConsensusWeights\.LowersTheErrorOfHeldOutTakes|GaitSway\.SynthesisedLegsStepOnTheFootTheHipsSwayOver)$]=]
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fill_test.cc ${CMAKE_CURRENT_LIST_DIR}/local_regression_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/limb_reach_test.cc ${CMAKE_CURRENT_LIST_DIR}/consensus_weights_test.cc
-          ${CMAKE_CURRENT_LIST_DIR}/held_out_fill.cc
+          ${CMAKE_CURRENT_LIST_DIR}/held_out_fill.cc ${CMAKE_CURRENT_LIST_DIR}/gait_sway_test.cc
   LIBS mocapfill_test_default_db mocapfill_evaluation mocapfill_fill mocapfill_synthesis mocapfill_texturing
        mocapfill_formats)
 
