@@ -56,10 +56,12 @@ struct FootPlantOptions {
   // stands, but the takes' strides differ from the keyed root's travel: they are held up to
   // this far.
   double max_given_correction_m = 0.4;
-  // On a keyed leg the given contacts join those found on the motion, held up to this far (a
-  // keyed leg's own stride is the animator's); between two keys that move the foot faster than
-  // `keyed_standing_speed_m_per_s` (capture's standing limit) they do not hold it.
-  double max_keyed_given_correction_m = 0.2;
+  // On a keyed leg the given contacts join those found on the motion, held up to this far;
+  // between two keys that move the foot faster than `keyed_standing_speed_m_per_s` (capture's
+  // standing limit) they do not hold it. Keys every 16 frames leave the foot slerped far from
+  // where the take stood between them; feet the keys have standing are held by their own rule
+  // (key_still_m_per_s), so a long hold no longer drags a standing leg onto a take's steps.
+  double max_keyed_given_correction_m = 0.6;
   double keyed_standing_speed_m_per_s = 0.3;
   // A keyed foot on the ground at two consecutive keys of its leg that moves slower than this
   // from one to the other stands between them, height included, however far the fill strays:
