@@ -11,8 +11,8 @@
 #include "processing/synthesis/consensus_weights.h"
 #include "processing/synthesis/coverage.h"
 #include "processing/synthesis/fill_stages.h"
-#include "processing/synthesis/gait_sway.h"
 #include "processing/synthesis/fragment_matching.h"
+#include "processing/synthesis/gait_sway.h"
 #include "processing/synthesis/ground_contacts.h"
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
@@ -46,7 +46,7 @@ struct FragmentContext {
   std::vector<SketchFragment> fragments;
   Eigen::VectorXf sigma;
   std::vector<int> moving;  // per fragment: 1 where the sketch's root moves (TravellingFragments)
-  Eigen::VectorXd sketch_sway;                // LateralSway of the keyed root (gait_sway.h), else empty
+  Eigen::VectorXd sketch_sway;               // LateralSway of the keyed root (gait_sway.h), else empty
   const Eigen::VectorXd* db_sway = nullptr;  // the database's, with sketch_sway
 };
 
