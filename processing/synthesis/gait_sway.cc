@@ -5,6 +5,7 @@
 
 #include "processing/core/rotation.h"
 #include "processing/core/signal_layout.h"
+#include "processing/filtering/window_mean.h"
 #include "processing/motion/tangent_space.h"
 
 namespace mocapfill {
@@ -12,20 +13,14 @@ namespace mocapfill {
 Eigen::VectorXd LateralSway(const Eigen::MatrixXd& root_features, double rate_hz, int half_window) {
   const RootTrajectory path = IntegrateRootFeatures(root_features, rate_hz, 0.0, Eigen::Vector3d::Zero());
   const int frames = static_cast<int>(root_features.rows());
-  Eigen::VectorXd sway = Eigen::VectorXd::Zero(frames);
+  Eigen::MatrixXd planar(frames, 3);  // x, z and the heading (unwrapped, so it averages without wrapping)
+  for (int f = 0; f < frames; ++f)
+    planar.row(f) << path.position_m[f].x(), path.position_m[f].z(), path.heading_rad[f];
+  const Eigen::MatrixXd centre = WindowMean(planar, half_window);
+  Eigen::VectorXd sway(frames);
   for (int f = 0; f < frames; ++f) {
-    const int lo = std::max(0, f - half_window), hi = std::min(frames - 1, f + half_window);
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    double heading = 0.0;  // unwrapped, so it averages without wrapping
-    for (int g = lo; g <= hi; ++g) {
-      centre += path.position_m[g];
-      heading += path.heading_rad[g];
-    }
-    centre /= hi - lo + 1;
-    heading /= hi - lo + 1;
-    Eigen::Vector3d offset = path.position_m[f] - centre;
-    offset.y() = 0.0;
-    sway[f] = offset.dot(YawRotation(heading) * Eigen::Vector3d::UnitX());
+    const Eigen::Vector3d offset(planar(f, 0) - centre(f, 0), 0.0, planar(f, 1) - centre(f, 1));
+    sway[f] = offset.dot(YawRotation(centre(f, 2)) * Eigen::Vector3d::UnitX());
   }
   return sway;
 }

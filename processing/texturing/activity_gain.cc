@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "processing/filtering/window_mean.h"
+
 namespace mocapfill {
 
 namespace {
@@ -15,15 +17,7 @@ Eigen::MatrixXd WindowedSpeed(const Eigen::MatrixXd& m, double rate_hz, int half
     const Eigen::Index t0 = std::max<Eigen::Index>(0, t - 1), t1 = std::min(frames - 1, t + 1);
     speed.row(t) = (m.row(t1) - m.row(t0)).cwiseAbs() * (rate_hz / static_cast<double>(t1 - t0));
   }
-  // Running sums make every window one subtraction.
-  Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(frames + 1, m.cols());
-  for (Eigen::Index t = 0; t < frames; ++t) sums.row(t + 1) = sums.row(t) + speed.row(t);
-  Eigen::MatrixXd mean(frames, m.cols());
-  for (Eigen::Index t = 0; t < frames; ++t) {
-    const Eigen::Index t0 = std::max<Eigen::Index>(0, t - half), t1 = std::min<Eigen::Index>(frames - 1, t + half);
-    mean.row(t) = (sums.row(t1 + 1) - sums.row(t0)) / static_cast<double>(t1 - t0 + 1);
-  }
-  return mean;
+  return WindowMean(speed, half);
 }
 
 }  // namespace

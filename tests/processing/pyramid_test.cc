@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "processing/filtering/window_mean.h"
+
 namespace mocapfill {
 namespace {
 
@@ -135,6 +137,17 @@ TEST(Pyramid, FloatSmoothingAgreesWithDouble) {
     const Eigen::MatrixXf f = SmoothLevel(xf, level, PyramidBoundary::kClamp);
     EXPECT_LT((d - f.cast<double>()).cwiseAbs().maxCoeff(), 1e-4 * x.cwiseAbs().maxCoeff());
   }
+}
+
+// Each frame's window holds `half` frames on either side, fewer at the clip's ends.
+TEST(WindowMean, AveragesACentredWindowClampedAtTheEnds) {
+  Eigen::MatrixXd m(5, 2);
+  m << 1, 10, 2, 20, 3, 30, 4, 40, 8, 80;
+  const Eigen::MatrixXd mean = WindowMean(m, 1);
+  EXPECT_DOUBLE_EQ(mean(0, 0), 1.5);  // frames 0 and 1
+  EXPECT_DOUBLE_EQ(mean(2, 0), 3.0);  // frames 1 to 3
+  EXPECT_DOUBLE_EQ(mean(4, 1), 60.0);  // frames 3 and 4
+  EXPECT_TRUE(WindowMean(m, 0).isApprox(m));
 }
 
 }  // namespace
