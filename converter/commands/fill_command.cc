@@ -74,9 +74,10 @@ void PrintSummary(const SketchFillResult& result) {
                            [&](const FootContact& c) { return c.found_on == source; });
     };
     std::fprintf(stderr, "  feet: %zu contacts held (%td where the matched takes stood, %td where the keys have the "
-                 "foot still), %d leg-frames, largest correction %.1f cm\n",
-                 result.feet.contacts.size(), found_on("takes"), found_on("keys"), result.feet.frames_held,
-                 100.0 * result.feet.max_correction_m);
+                 "foot still, %td where a key has it stand as the hips pass), %d leg-frames, largest correction "
+                 "%.1f cm\n",
+                 result.feet.contacts.size(), found_on("takes"), found_on("keys"), found_on("stance"),
+                 result.feet.frames_held, 100.0 * result.feet.max_correction_m);
   }
   if (r.coverage.measured && !r.coverage.fragments.empty()) {
     const auto less = [](const FragmentCoverage& a, const FragmentCoverage& b) { return a.unexplained < b.unexplained; };

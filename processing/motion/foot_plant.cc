@@ -7,6 +7,7 @@
 #include "processing/core/kinematics.h"
 #include "processing/core/smoothstep.h"
 #include "processing/motion/key_fidelity.h"
+#include "processing/motion/key_stances.h"
 
 namespace mocapfill {
 
@@ -83,6 +84,7 @@ struct JointContacts {
   std::vector<bool> down;
   std::vector<Vector3d> anchor;  // per frame, where down
   std::vector<bool> keys_still;  // per frame: down because the keys have the foot still there
+  std::vector<bool> key_stance;  // per frame: down because a key has it stand as the hips pass
 };
 
 bool HasKeys(const std::vector<bool>& pinned) { return std::find(pinned.begin(), pinned.end(), true) != pinned.end(); }
@@ -149,13 +151,23 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s, voted);
   const double floor = FloorOf(track, pinned);
   JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, floor, options.detection, &hips),
-                    std::vector<Vector3d>(track.size(), Vector3d::Zero()), std::vector<bool>(track.size(), false)};
+                    std::vector<Vector3d>(track.size(), Vector3d::Zero()), std::vector<bool>(track.size(), false),
+                    std::vector<bool>(track.size(), false)};
   if (is_given && keyed)
     for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || voted[f];
   if (keyed && options.key_still_m_per_s > 0.0)
     out.keys_still = StillBetweenKeys(track, times, pinned, floor, options.detection.max_height_m,
                                       options.key_still_m_per_s);
-  for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || out.keys_still[f];
+  if (keyed) {  // each key's stance, where the fill or the takes have the foot down at the key
+    const KeyStanceOptions stance{options.key_stance_ahead_share, options.key_stance_behind_share,
+                                  options.key_stance_min_travel_m_per_s, 2.0 * options.fade_s,
+                                  options.key_still_m_per_s, options.detection.max_height_m};
+    std::vector<bool> standing = out.down;
+    if (is_given)
+      for (size_t f = 0; f < standing.size(); ++f) standing[f] = standing[f] || given[f];
+    out.key_stance = StancesAroundKeys(track, hips, times, pinned, standing, floor, stance);
+  }
+  for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || out.keys_still[f] || out.key_stance[f];
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
     double farthest = 0.0;
@@ -182,7 +194,10 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     }
     std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
     FootContact c{side, part, times[first], times[last], 0, 0.0,
-                  keys_still ? "keys" : marked(voted) ? "takes" : "fill"};
+                  keys_still             ? "keys"
+                  : marked(out.key_stance) ? "stance"
+                  : marked(voted)          ? "takes"
+                                           : "fill"};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
     report.contacts.push_back(c);
   }
@@ -232,8 +247,11 @@ Correction HoldAt(int f, const LegTracks& tracks, const JointContacts& heel, con
   }
   // Held along the ground only: the stance leg is nearly straight, where a centimetre of height
   // asks for several of knee (knees shook around the keys), while sliding is horizontal. Where
-  // the keys have the foot still, its height is theirs too (the fill lifted it in a step).
-  const bool keys_height = heel.down[f] ? heel.keys_still[f] : toe_down && toe->keys_still[f];
+  // the keys have the foot still, its height is theirs too (the fill lifted it in a step); a
+  // heel held beside such a toe keeps its height with it (free, the ankle dropped 4 cm in one
+  // frame where the heel lifted and the toe's height took over).
+  const bool toe_keys_height = toe_down && toe->keys_still[f];
+  const bool keys_height = heel.down[f] ? heel.keys_still[f] || toe_keys_height : toe_keys_height;
   if (!keys_height) c.move.y() = 0.0;
   return c;
 }

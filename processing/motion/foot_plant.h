@@ -68,6 +68,14 @@ struct FootPlantOptions {
   // keys sparser than a step let the texture's take step there (keys every 16 frames: a
   // standing wave's feet lifted 8 cm and slid at 54 cm/s between keys that had them still).
   double key_still_m_per_s = 0.05;
+  // A keyed foot on the ground at a key, where the fill's contacts or the takes' vote have it
+  // standing, with the hips travelling faster than `key_stance_min_travel_m_per_s`, stands at
+  // the key while the hips pass over it: from when they were `key_stance_ahead_share` of its
+  // reach short of it until they are `key_stance_behind_share` past it (key_stances.h; keys
+  // every 8 or 16 frames, not denser). Both 0: off.
+  double key_stance_ahead_share = 0.2;
+  double key_stance_behind_share = 0.25;
+  double key_stance_min_travel_m_per_s = 0.3;
   // Corrections that stretch the leg into the last this share of its length approach full
   // length smoothly rather than snapping the knee straight (0: plain two-bone IK).
   double soft_reach = 0.05;
@@ -84,7 +92,8 @@ struct FootContact {
   int keys = 0;                   // keys of the leg inside the contact (they fix its anchor)
   double max_correction_m = 0.0;  // largest IK move of the foot joint inside the contact
   // "fill": on the motion being planted; "takes": given with the leg; "keys": the leg's keys
-  // have the foot still on the ground (FootPlantOptions::key_still_m_per_s).
+  // have the foot still on the ground (FootPlantOptions::key_still_m_per_s); "stance": a key
+  // has the foot on the ground and the hips pass over it (FootPlantOptions::key_stance_*).
   std::string found_on = "fill";
 };
 
