@@ -267,20 +267,36 @@ int StepsToKey(const std::vector<bool>& pinned, int from, int step, int limit) {
   return limit + 1;
 }
 
-// Beyond a contact the correction of its edge frame fades out over `fade` frames (smoothstep),
-// or sooner where a key of the leg comes first: the fade then reaches zero at the key (the
-// key's pose is the animator's) rather than being cut off there.
-std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::vector<bool>& pinned, int fade) {
+// How a contact's correction is let go beyond its edge: over `frames`, or over more (up to
+// `max_frames`) where the correction is larger than `per_frame` times that.
+struct Release {
+  int frames = 1;
+  int max_frames = 1;
+  double per_frame = INFINITY;  // metres
+
+  int FramesFor(const Correction& c) const {
+    const double needed = std::ceil(c.move.norm() / per_frame);
+    return needed > frames ? static_cast<int>(std::min<double>(needed, max_frames)) : frames;
+  }
+};
+
+// Beyond a contact the correction of its edge frame fades out over the release's frames
+// (smoothstep), or sooner where a key of the leg comes first: the fade then reaches zero at the
+// key (the key's pose is the animator's) rather than being cut off there.
+std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::vector<bool>& pinned,
+                                const Release& release) {
   std::vector<Correction> out = held;
   const int n = static_cast<int>(held.size());
   for (int f = 0; f < n; ++f) {
     if (held[f].any || pinned[f]) continue;
     double best = 0.0;
     for (int dir : {-1, 1})
-      for (int d = 1; d <= fade; ++d) {
+      for (int d = 1; d <= release.max_frames; ++d) {
         const int e = f + dir * d;
         if (e < 0 || e >= n || (pinned[e] && !held[e].any)) break;
         if (!held[e].any) continue;
+        const int fade = release.FramesFor(held[e]);
+        if (d > fade) break;
         const int span = StepsToKey(pinned, e, -dir, fade) - 1;  // from the contact's edge to zero weight
         const double w = Smoothstep(1.0 - double(d) / (span + 1));
         if (w > best) {
@@ -370,8 +386,8 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
                           const FootPlantOptions& options, MotionClip& clip) {
   FootPlantReport report;
   if (clip.num_frames < 2) return report;
-  const int fade = std::max(1, static_cast<int>(std::lround(options.fade_s * (clip.num_frames - 1) /
-                                                            std::max(1e-9, clip.time_s(clip.num_frames - 1) - clip.time_s(0)))));
+  const double frame_s = std::max(1e-9, clip.time_s(clip.num_frames - 1) - clip.time_s(0)) / (clip.num_frames - 1);
+  const int fade = std::max(1, static_cast<int>(std::lround(options.fade_s / frame_s)));
   WorldPose pose;
   for (const LegForPlanting& leg : legs) {
     const LegTracks tracks = TrackLeg(skeleton, clip, leg);
@@ -394,7 +410,13 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
         held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
                          Smoothstep(double(heel_off) / (turn_span + 1)));
     }
-    std::vector<Correction> corrections = FadeOut(held, pinned, fade);
+    // A keyed leg lets a large correction go no faster than keyed_release_m_per_s (its fades
+    // end at keys, so they stay short where keys are dense).
+    Release release{fade, fade, INFINITY};
+    if (HasKeys(pinned) && options.keyed_release_m_per_s > 0.0)
+      release = {fade, std::max(fade, static_cast<int>(std::lround(options.keyed_max_fade_s / frame_s))),
+                 options.keyed_release_m_per_s * frame_s};
+    std::vector<Correction> corrections = FadeOut(held, pinned, release);
     if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, leg, corrections);
 
     const Vector3d hinge = HingeOf(skeleton, clip, leg.chain);

@@ -48,6 +48,11 @@ struct LegForPlanting {
 struct FootPlantOptions {
   ContactDetection detection;
   double fade_s = 0.1;  // the correction fades out over this beyond a contact
+  // On a keyed leg a larger correction fades out no faster than this, over up to
+  // `keyed_max_fade_s` (never past a key): holds the keys' stances keep far from the slerp,
+  // let go over `fade_s`, threw the foot to the fill's (0: always `fade_s`).
+  double keyed_release_m_per_s = 0.25;
+  double keyed_max_fade_s = 0.3;
   double max_correction_m = 0.1;  // contacts needing a larger move are not held
   // Toe contacts tighter still: a toe held far behind the fill's during push-off straightens
   // the leg, and its release turned the knee faster than capture does.
