@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "processing/core/median.h"
 
 namespace mocapfill {
 
@@ -34,9 +37,7 @@ double MedianKeyGap(const std::vector<double>& times, const std::vector<bool>& p
     if (previous >= 0) gaps.push_back(times[f] - times[previous]);
     previous = f;
   }
-  if (gaps.empty()) return 0.0;
-  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
-  return gaps[gaps.size() / 2];
+  return gaps.empty() ? 0.0 : UpperMedian(std::move(gaps));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 
 #include "formats/motion_io.h"
@@ -739,6 +740,19 @@ Result<PooledWalks> FillSparselyKeyedWalks(const SketchFillOptions& options) {
   return out;
 }
 
+// Those walks filled twice, the feet's options set by `set(rule, options)` with the rule off
+// (false) and on (true).
+Result<std::map<bool, PooledWalks>> FillSparselyKeyedWalksBothWays(
+    const std::function<void(bool, FootPlantOptions&)>& set) {
+  std::map<bool, PooledWalks> walks;
+  for (bool rule : {false, true}) {
+    SketchFillOptions options;
+    set(rule, options.feet);
+    ASSIGN_OR_RETURN(walks[rule], FillSparselyKeyedWalks(options));
+  }
+  return walks;
+}
+
 // Those walks: a foot the keys catch on the ground stands there while the hips pass over it
 // (key_stance_*), where the slerp between keys carried it on at the mean pace. Over the
 // capture's contacts of all of them the feet slide less, the jitter ratio stays within issue
@@ -747,16 +761,13 @@ Result<PooledWalks> FillSparselyKeyedWalks(const SketchFillOptions& options) {
 // happy walk: 35.65 -> 37.64).
 TEST(FootPlant, SparselyKeyedFeetStandWhileTheHipsPassOverThem) {
   MOCAPFILL_REQUIRE_CORPUS();
-  std::map<bool, PooledWalks> walks;
-  for (bool rule : {false, true}) {
-    SketchFillOptions options;
-    options.feet.keyed_release_m_per_s = 0.0;
-    if (!rule) options.feet.key_stance_ahead_share = options.feet.key_stance_behind_share = 0.0;
-    Result<PooledWalks> pooled = FillSparselyKeyedWalks(options);
-    ASSERT_TRUE(pooled.ok()) << pooled.status().message();
-    walks[rule] = *pooled;
-    EXPECT_LT(pooled->key_error_max_deg, kPlantedKeysToleranceDeg);
-  }
+  Result<std::map<bool, PooledWalks>> both = FillSparselyKeyedWalksBothWays([](bool rule, FootPlantOptions& feet) {
+    feet.keyed_release_m_per_s = 0.0;
+    if (!rule) feet.key_stance_ahead_share = feet.key_stance_behind_share = 0.0;
+  });
+  ASSERT_TRUE(both.ok()) << both.status().message();
+  std::map<bool, PooledWalks>& walks = *both;
+  for (bool rule : {false, true}) EXPECT_LT(walks[rule].key_error_max_deg, kPlantedKeysToleranceDeg);
   std::printf("%d walks, legs keyed every 16 frames: skating during the capture's contacts %.2f cm/s (%.2f without "
               "the stances at keys, %d contacts from them), mean jitter ratio %.3f (%.3f)\n",
               walks[true].takes, walks[true].skating_cm_per_s, walks[false].skating_cm_per_s, walks[true].stances,
@@ -773,15 +784,12 @@ TEST(FootPlant, SparselyKeyedFeetStandWhileTheHipsPassOverThem) {
 // more and the keys stay exact (measured: jitter 0.831 -> 0.739, skating 19.93 -> 18.40 cm/s).
 TEST(FootPlant, KeyedLegsLetLargeCorrectionsGoSlowly) {
   MOCAPFILL_REQUIRE_CORPUS();
-  std::map<bool, PooledWalks> walks;
-  for (bool slow : {false, true}) {
-    SketchFillOptions options;
-    if (!slow) options.feet.keyed_release_m_per_s = 0.0;
-    Result<PooledWalks> pooled = FillSparselyKeyedWalks(options);
-    ASSERT_TRUE(pooled.ok()) << pooled.status().message();
-    walks[slow] = *pooled;
-    EXPECT_LT(pooled->key_error_max_deg, kPlantedKeysToleranceDeg);
-  }
+  Result<std::map<bool, PooledWalks>> both = FillSparselyKeyedWalksBothWays([](bool slow, FootPlantOptions& feet) {
+    if (!slow) feet.keyed_release_m_per_s = 0.0;
+  });
+  ASSERT_TRUE(both.ok()) << both.status().message();
+  std::map<bool, PooledWalks>& walks = *both;
+  for (bool slow : {false, true}) EXPECT_LT(walks[slow].key_error_max_deg, kPlantedKeysToleranceDeg);
   std::printf("%d walks, legs keyed every 16 frames: mean jitter ratio %.3f released slowly, %.3f within 0.1 s; "
               "skating during the capture's contacts %.2f / %.2f cm/s\n",
               walks[true].takes, walks[true].jitter, walks[false].jitter, walks[true].skating_cm_per_s,
