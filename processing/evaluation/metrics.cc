@@ -17,6 +17,7 @@ constexpr double kCmPerM = 100.0;
 // LaFAN1 contact rule: squared per-frame displacement below 0.02 cm^2 at 30 fps (about 4.2 cm/s).
 constexpr double kContactSpeedCmPerS = 4.2426;
 constexpr double kSkateThresholdCmPerS = 2.0;
+constexpr double kFloorBandM = 0.01;  // a foot joint this near its floor is on the ground
 
 struct Posed {
   std::vector<Eigen::Vector3d> positions;       // [f * J + j], metres
@@ -112,24 +113,49 @@ std::vector<std::vector<int>> FootKinds(const Skeleton& skeleton, const std::vec
 }
 
 // Heights are world y (the importers' up axis), as the skating measure's horizontal plane is.
-void ScorePenetration(const Skeleton& skeleton, const Posed& truth, const Posed& filled, const std::vector<int>& feet,
-                      int frames, FillMetrics& m) {
+// Per foot joint, the floor of its kind (FootKinds): the truth's lowest height of either side's.
+std::vector<std::pair<int, double>> FootFloors(const Skeleton& skeleton, const Posed& truth,
+                                               const std::vector<int>& feet, int frames) {
   const int nj = skeleton.num_joints();
-  double deepest = 0.0, sum = 0.0;
-  long below = 0;
+  std::vector<std::pair<int, double>> floors;
   for (const std::vector<int>& kind : FootKinds(skeleton, feet)) {
     double ground = std::numeric_limits<double>::infinity();
     for (int j : kind)
       for (int f = 0; f < frames; ++f) ground = std::min(ground, truth.positions[f * nj + j].y());
-    for (int j : kind)
-      for (int f = 0; f < frames; ++f) {
-        const double depth = (ground - filled.positions[f * nj + j].y()) * kCmPerM;
-        if (depth <= 0.0) continue;
-        deepest = std::max(deepest, depth);
-        sum += depth;
-        ++below;
-      }
+    for (int j : kind) floors.emplace_back(j, ground);
   }
+  return floors;
+}
+
+// Mean horizontal speed (cm/s) of `posed`'s foot joints over the steps where both frames are
+// within kFloorBandM of their floor; `steps` gets how many there were.
+double FloorGlide(const std::vector<std::pair<int, double>>& floors, const Posed& posed, int nj, int frames,
+                  double rate, long& steps) {
+  double sum = 0.0;
+  steps = 0;
+  for (const auto& [j, ground] : floors)
+    for (int f = 0; f + 1 < frames; ++f) {
+      const Eigen::Vector3d& a = posed.positions[f * nj + j];
+      const Eigen::Vector3d& b = posed.positions[(f + 1) * nj + j];
+      if (a.y() - ground > kFloorBandM || b.y() - ground > kFloorBandM) continue;
+      sum += std::hypot(b.x() - a.x(), b.z() - a.z()) * kCmPerM * rate;
+      ++steps;
+    }
+  return steps ? sum / steps : 0.0;
+}
+
+void ScorePenetration(const std::vector<std::pair<int, double>>& floors, const Posed& filled, int nj, int frames,
+                      FillMetrics& m) {
+  double deepest = 0.0, sum = 0.0;
+  long below = 0;
+  for (const auto& [j, ground] : floors)
+    for (int f = 0; f < frames; ++f) {
+      const double depth = (ground - filled.positions[f * nj + j].y()) * kCmPerM;
+      if (depth <= 0.0) continue;
+      deepest = std::max(deepest, depth);
+      sum += depth;
+      ++below;
+    }
   m.penetration_max_cm = deepest;
   m.penetration_mean_cm = below ? sum / below : 0.0;
 }
@@ -195,6 +221,8 @@ const std::vector<MetricField>& AveragedMetricFields() {
       {"foot_skate_share", &FillMetrics::foot_skate_share},
       {"penetration_max_cm", &FillMetrics::penetration_max_cm},
       {"penetration_mean_cm", &FillMetrics::penetration_mean_cm},
+      {"floor_glide_cm_per_s", &FillMetrics::floor_glide_cm_per_s},
+      {"capture_floor_glide_cm_per_s", &FillMetrics::capture_floor_glide_cm_per_s},
       {"key_error_mean_deg", &FillMetrics::key_error_mean_deg},
       {"bone_length_error", &FillMetrics::bone_length_error}};
   return fields;
@@ -271,7 +299,10 @@ Result<FillMetrics> ScoreFill(const Skeleton& skeleton, const MotionClip& truth,
   const double true_jerk = MeanJerk(pt, body, frames, nj, rate);
   m.jitter_ratio = true_jerk > 0.0 ? MeanJerk(pf, body, frames, nj, rate) / true_jerk : 0.0;
   ScoreFeet(skeleton, pt, pf, feet, frames, rate, m);
-  ScorePenetration(skeleton, pt, pf, feet, frames, m);
+  const std::vector<std::pair<int, double>> floors = FootFloors(skeleton, pt, feet, frames);
+  ScorePenetration(floors, pf, nj, frames, m);
+  m.floor_glide_cm_per_s = FloorGlide(floors, pf, nj, frames, rate, m.floor_steps);
+  m.capture_floor_glide_cm_per_s = FloorGlide(floors, pt, nj, frames, rate, m.capture_floor_steps);
   ScoreKeys(skeleton, sketch, filled, m);
   m.bone_length_error = BoneLengthError(skeleton, truth, pt, pf, frames);
   return m;

@@ -37,6 +37,15 @@ struct FillMetrics {
   // depth over the (frame, joint) pairs that are below it (0 when none is).
   double penetration_max_cm = 0.0;
   double penetration_mean_cm = 0.0;
+  // Horizontal speed (cm/s) of the filled foot joints over the steps (frame to next) where they
+  // stay within 1 cm of those floors, whatever the capture does meanwhile: feet gliding along
+  // the ground, which foot_skate_cm_per_s does not see where the fill steps out of time with the
+  // capture. The capture's own (heels and toes roll and pivot on the floor) is the reference.
+  // Summaries pool each over its steps.
+  double floor_glide_cm_per_s = 0.0;
+  long floor_steps = 0;
+  double capture_floor_glide_cm_per_s = 0.0;
+  long capture_floor_steps = 0;
   // Geodesic angle (deg) between output and sketch at keyed (joint, frame) pairs.
   double key_error_mean_deg = 0.0;
   double key_error_max_deg = 0.0;

@@ -17,30 +17,39 @@ void AddWeighted(FillMetrics& sum, const FillMetrics& m, double w) {
   sum.foot_skate_share += w * m.foot_skate_share;
   sum.penetration_max_cm += w * m.penetration_max_cm;
   sum.penetration_mean_cm += w * m.penetration_mean_cm;
+  sum.floor_glide_cm_per_s += w * m.floor_glide_cm_per_s;
+  sum.capture_floor_glide_cm_per_s += w * m.capture_floor_glide_cm_per_s;
   sum.key_error_mean_deg += w * m.key_error_mean_deg;
   sum.key_error_max_deg = std::max(sum.key_error_max_deg, m.key_error_max_deg);  // worst, not mean
   sum.bone_length_error += w * m.bone_length_error;
   sum.unkeyed_joints = m.unkeyed_joints;
 }
 
-// Foot skating is pooled over the truth's contact frames: a clip with one contact frame must
-// not weigh as much as a walk with hundreds (the per-clip average let single frames of runs
-// dominate it).
-bool PooledOverContacts(double FillMetrics::*field) {
-  return field == &FillMetrics::foot_skate_cm_per_s || field == &FillMetrics::foot_skate_share;
+// Foot skating is pooled over the truth's contact frames, and floor glide over the steps on
+// the floor: a clip with one contact frame must not weigh as much as a walk with hundreds (the
+// per-clip average let single frames of runs dominate it). The count a field is pooled over,
+// or null for a plain mean over clips.
+long FillMetrics::*PoolingCount(double FillMetrics::*field) {
+  if (field == &FillMetrics::foot_skate_cm_per_s || field == &FillMetrics::foot_skate_share)
+    return &FillMetrics::foot_contact_frames;
+  if (field == &FillMetrics::floor_glide_cm_per_s) return &FillMetrics::floor_steps;
+  if (field == &FillMetrics::capture_floor_glide_cm_per_s) return &FillMetrics::capture_floor_steps;
+  return nullptr;
 }
 
-void PoolOverContacts(const std::vector<const ClipScore*>& scores, FillMetrics& mean) {
-  long frames = 0;
-  double speed = 0.0, share = 0.0;
-  for (const ClipScore* s : scores) {
-    frames += s->metrics.foot_contact_frames;
-    speed += s->metrics.foot_skate_cm_per_s * s->metrics.foot_contact_frames;
-    share += s->metrics.foot_skate_share * s->metrics.foot_contact_frames;
+void PoolOverCounts(const std::vector<const ClipScore*>& scores, FillMetrics& mean) {
+  for (const MetricField& field : AveragedMetricFields()) {
+    long FillMetrics::*count = PoolingCount(field.field);
+    if (!count) continue;
+    long total = 0;
+    double sum = 0.0;
+    for (const ClipScore* s : scores) {
+      total += s->metrics.*count;
+      sum += s->metrics.*field.field * s->metrics.*count;
+    }
+    mean.*count = total;
+    mean.*field.field = total > 0 ? sum / total : 0.0;
   }
-  mean.foot_contact_frames = frames;
-  mean.foot_skate_cm_per_s = frames > 0 ? speed / frames : 0.0;
-  mean.foot_skate_share = frames > 0 ? share / frames : 0.0;
 }
 
 std::vector<std::string> HalvesInOrder(const std::vector<ClipScore>& scores) {
@@ -81,14 +90,14 @@ BootstrapGroups FoldGroups(const std::vector<const ClipScore*>& scores) {
 void AddIntervals(const RowScores& selected, const BootstrapOptions& bootstrap, SummaryRow& row) {
   const BootstrapGroups groups = FoldGroups(selected.scores);
   for (const MetricField& field : AveragedMetricFields()) {
-    std::vector<double> values, contact_frames;
+    long FillMetrics::*count = PoolingCount(field.field);
+    std::vector<double> values, counts;
     for (const ClipScore* s : selected.scores) {
       values.push_back(s->metrics.*field.field);
-      contact_frames.push_back(static_cast<double>(s->metrics.foot_contact_frames));
+      if (count) counts.push_back(static_cast<double>(s->metrics.*count));
     }
-    row.intervals.push_back({field.name, PooledOverContacts(field.field)
-                                             ? BootstrapWeightedMean(values, contact_frames, bootstrap, groups)
-                                             : BootstrapMean(values, bootstrap, groups)});
+    row.intervals.push_back({field.name, count ? BootstrapWeightedMean(values, counts, bootstrap, groups)
+                                               : BootstrapMean(values, bootstrap, groups)});
   }
   std::vector<double> values, reference;
   for (size_t i = 0; i < selected.scores.size(); ++i) {
@@ -123,7 +132,7 @@ std::vector<SummaryRow> Summarise(const std::vector<ClipScore>& scores, const st
           row.fill_seconds += w * s->fill_seconds;
           row.seconds_per_s += w * s->seconds_per_s;
         }
-        PoolOverContacts(selected.scores, row.mean);
+        PoolOverCounts(selected.scores, row.mean);
         AddIntervals(selected, bootstrap, row);
         rows.push_back(row);
       }
@@ -147,7 +156,7 @@ std::vector<FoldCell> SummariseFolds(const std::vector<ClipScore>& scores, const
         const int n = static_cast<int>(mine.size());
         if (n == 0) continue;
         for (const ClipScore* s : mine) AddWeighted(entry.mean, s->metrics, 1.0 / n);
-        PoolOverContacts(mine, entry.mean);
+        PoolOverCounts(mine, entry.mean);
         cell.clips = std::max(cell.clips, n);
         cell.methods.push_back(entry);
       }

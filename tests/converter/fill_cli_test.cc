@@ -167,7 +167,7 @@ TEST(EvalCli, LeaveOneStyleOutOnTheDefaultDatabaseScoresEveryMethod) {
 
 // The split-half protocol on the default database's run clips: styles happy and tired form the
 // tuning half (each against the other only), normal the reporting half (against both others).
-// The JSON carries both halves, intervals, the difference to mean, penetration and fold cells;
+// The JSON carries both halves, intervals, the difference to mean, penetration, floor glide and fold cells;
 // the reporting fold scores exactly as in plain leave-one-out (same database).
 TEST(EvalCli, SplitHalvesCarryIntervalsFoldCellsAndPenetration) {
   const std::string db = testing::FixturePath("default_db");
@@ -191,6 +191,8 @@ TEST(EvalCli, SplitHalvesCarryIntervalsFoldCellsAndPenetration) {
     EXPECT_GE(row["metrics"]["penetration_max_cm"].get<double>(), 0.0);
     EXPECT_TRUE(row["intervals"].contains("penetration_mean_cm"));
     EXPECT_TRUE(row["intervals"].contains("foot_skate_cm_per_s"));
+    EXPECT_TRUE(row["intervals"].contains("floor_glide_cm_per_s"));
+    EXPECT_GT(row["metrics"]["capture_floor_steps"].get<long>(), 0);  // the runs' feet touch the floor
     if (row["method"] == "mean") {
       EXPECT_TRUE(row["below_mean"].is_null());
     } else {

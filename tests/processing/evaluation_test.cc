@@ -1,6 +1,8 @@
 // Sketch making and fill metrics on a real Bandai-Namco walk (shared corpus).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "formats/motion_io.h"
 #include "processing/evaluation/loso.h"
 #include "processing/evaluation/metrics.h"
@@ -140,6 +142,34 @@ TEST(FillMetrics, SummariesPoolFootSkatingOverContactFrames) {
               (walk.foot_skate_cm_per_s * walk.foot_contact_frames + run.foot_skate_cm_per_s * run.foot_contact_frames) / frames,
               1e-9);
   EXPECT_GT(std::abs(rows[0].mean.foot_skate_cm_per_s - 0.5 * (walk.foot_skate_cm_per_s + run.foot_skate_cm_per_s)), 0.1);
+  const long steps = walk.floor_steps + run.floor_steps;
+  EXPECT_EQ(rows[0].mean.floor_steps, steps);
+  const double glide_sum = walk.floor_glide_cm_per_s * walk.floor_steps + run.floor_glide_cm_per_s * run.floor_steps;
+  EXPECT_NEAR(rows[0].mean.floor_glide_cm_per_s, glide_sum / steps, 1e-9);
+}
+
+// Floor glide: the capture's heels and toes roll and pivot on the floor at some centimetres a
+// second; the sketch's legs, slerped between keys 8 frames apart under hips moving linearly,
+// drag the feet along it several times as fast. The truth scored against itself glides as
+// the capture does.
+TEST(FillMetrics, FloorGlideMeasuresFeetDraggedAlongTheGround) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Scene walk = LoadWalk();
+  const MotionClip& truth = walk.clips[0];
+  const MotionClip sketch = *MakeSketch(walk.skeleton, truth, LegSpec());
+  const int hips = *walk.skeleton.Find("Hips");
+  Result<FillMetrics> self = ScoreFill(walk.skeleton, truth, sketch, truth, hips);
+  Result<FillMetrics> slerped = ScoreFill(walk.skeleton, truth, sketch, sketch, hips);
+  ASSERT_TRUE(self.ok() && slerped.ok());
+  std::printf("floor glide, capture %.2f cm/s over %ld steps, sketch %.2f cm/s over %ld steps\n",
+              self->capture_floor_glide_cm_per_s, self->capture_floor_steps, slerped->floor_glide_cm_per_s,
+              slerped->floor_steps);
+  EXPECT_DOUBLE_EQ(self->floor_glide_cm_per_s, self->capture_floor_glide_cm_per_s);
+  EXPECT_EQ(self->floor_steps, self->capture_floor_steps);
+  EXPECT_GT(self->capture_floor_steps, truth.num_frames);  // both feet stand about half the time
+  EXPECT_GT(self->capture_floor_glide_cm_per_s, 1.0);
+  EXPECT_LT(self->capture_floor_glide_cm_per_s, 20.0);
+  EXPECT_GT(slerped->floor_glide_cm_per_s, 2.0 * slerped->capture_floor_glide_cm_per_s);
 }
 
 }  // namespace
