@@ -318,31 +318,71 @@ double GivenFloor(const std::vector<Vector3d>& track, const std::vector<bool>& d
   return std::max(lowest, StandingOrLowestHeight(track, down) + shift);
 }
 
-// Between keys the slerped legs and the linearly interpolated root can sink a foot below the
-// ground the keys stand on: every frame's foot (after the holds) is lifted back onto the
-// floor of its heel and toe (their lowest heights at the keys); keys are on or above it. A
-// leg given its contacts (synthesised, without keys) stands on the median height of its
-// contacts moved onto the takes' ground instead: its lowest height let a blend of takes' feet
-// sink up to 5 cm below the ground it walked on, and the median alone still 1 - 5 cm.
-void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, const LegForPlanting& leg,
-                    std::vector<Correction>& corrections) {
-  double heel_floor = FloorOf(tracks.ankle, pinned);
-  double toe_floor = tracks.toe.empty() ? -INFINITY : FloorOf(tracks.toe, pinned);
+// The floors a leg's heel and toe are kept on: their lowest heights at the keys (keys are on or
+// above them). A leg given its contacts (synthesised, without keys) stands on the median height
+// of its contacts moved onto the takes' ground instead: its lowest height let a blend of takes'
+// feet sink up to 5 cm below the ground it walked on, and the median alone still 1 - 5 cm.
+struct LegFloors {
+  double heel = -INFINITY, toe = -INFINITY;
+};
+
+LegFloors FloorsOf(const LegTracks& tracks, const std::vector<bool>& pinned, const LegForPlanting& leg) {
+  LegFloors floors{FloorOf(tracks.ankle, pinned), tracks.toe.empty() ? -INFINITY : FloorOf(tracks.toe, pinned)};
   // A keyed leg stands where its keys put it: their lowest heights are its floor.
-  const bool keyed_leg = HasKeys(pinned);
-  if (!keyed_leg && leg.heel_down.size() == tracks.ankle.size())
-    heel_floor = GivenFloor(tracks.ankle, leg.heel_down, heel_floor, leg.heel_ground_shift_m);
-  if (!keyed_leg && !tracks.toe.empty() && leg.toe_down.size() == tracks.toe.size())
-    toe_floor = GivenFloor(tracks.toe, leg.toe_down, toe_floor, leg.toe_ground_shift_m);
+  if (HasKeys(pinned)) return floors;
+  if (leg.heel_down.size() == tracks.ankle.size())
+    floors.heel = GivenFloor(tracks.ankle, leg.heel_down, floors.heel, leg.heel_ground_shift_m);
+  if (!tracks.toe.empty() && leg.toe_down.size() == tracks.toe.size())
+    floors.toe = GivenFloor(tracks.toe, leg.toe_down, floors.toe, leg.toe_ground_shift_m);
+  return floors;
+}
+
+// How far the corrected foot's ankle and toe lie below `floors` raised by `above(joint)`: the
+// lift that brings both to them (<= 0: none needed).
+template <typename Above>
+double Shortfall(const LegTracks& tracks, const Correction& c, int f, const LegFloors& floors, Above above) {
+  const Vector3d ankle = tracks.ankle[f] + c.move;
+  double lift = floors.heel + above(tracks.ankle) - ankle.y();
+  if (!tracks.toe.empty())
+    lift = std::max(lift, floors.toe + above(tracks.toe) - (ankle + c.turn * (tracks.toe[f] - tracks.ankle[f])).y());
+  return lift;
+}
+
+// Between keys the slerped legs and the linearly interpolated root can sink a foot below the
+// ground the keys stand on: every frame's foot (after the holds) is lifted back onto its floors.
+void LiftAboveFloor(const LegTracks& tracks, const std::vector<bool>& pinned, const LegFloors& floors,
+                    std::vector<Correction>& corrections) {
   for (size_t f = 0; f < corrections.size(); ++f) {
     if (pinned[f]) continue;
-    Correction& c = corrections[f];
-    const Vector3d ankle = tracks.ankle[f] + c.move;
-    double lift = heel_floor - ankle.y();
-    if (!tracks.toe.empty()) lift = std::max(lift, toe_floor - (ankle + c.turn * (tracks.toe[f] - tracks.ankle[f])).y());
+    const double lift = Shortfall(tracks, corrections[f], static_cast<int>(f), floors, [](const auto&) { return 0.0; });
     if (lift <= 0.0) continue;
-    c.move.y() += lift;
-    c.any = true;
+    corrections[f].move.y() += lift;
+    corrections[f].any = true;
+  }
+}
+
+// A foot no key pins and no contact holds is raised to clear its floors by the clearance its
+// horizontal speed asks (swing_clearance.h), shaped in time by SwingLift.
+void KeepSwingsClear(const LegTracks& tracks, const std::vector<bool>& pinned, const std::vector<Correction>& held,
+                     const LegFloors& floors, double frame_s, const SwingClearanceOptions& options,
+                     std::vector<Correction>& corrections) {
+  const int n = static_cast<int>(corrections.size());
+  std::vector<double> shortfall(n, 0.0);
+  std::vector<bool> free(n);
+  for (int f = 0; f < n; ++f) free[f] = !pinned[f] && !held[f].any;
+  for (int f = 1; f + 1 < n; ++f) {
+    if (!free[f]) continue;
+    shortfall[f] = Shortfall(tracks, corrections[f], f, floors, [&](const std::vector<Vector3d>& track) {
+      const Vector3d step = track[f + 1] - track[f - 1];
+      const double speed = std::hypot(step.x(), step.z()) / (2.0 * frame_s);
+      return options.clearance_m * std::min(1.0, speed / options.full_speed_m_per_s);
+    });
+  }
+  const std::vector<double> lift = SwingLift(shortfall, free, pinned, frame_s, options);
+  for (int f = 0; f < n; ++f) {
+    if (lift[f] <= 0.0) continue;
+    corrections[f].move.y() += lift[f];
+    corrections[f].any = true;
   }
 }
 
@@ -417,7 +457,11 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
       release = {fade, std::max(fade, static_cast<int>(std::lround(options.keyed_max_fade_s / frame_s))),
                  options.keyed_release_m_per_s * frame_s};
     std::vector<Correction> corrections = FadeOut(held, pinned, release);
-    if (options.keep_above_floor) LiftAboveFloor(tracks, pinned, leg, corrections);
+    if (options.keep_above_floor) {
+      const LegFloors floors = FloorsOf(tracks, pinned, leg);
+      LiftAboveFloor(tracks, pinned, floors, corrections);
+      KeepSwingsClear(tracks, pinned, held, floors, frame_s, options.swing, corrections);
+    }
 
     const Vector3d hinge = HingeOf(skeleton, clip, leg.chain);
     PlantedLeg planted{leg.side, std::vector<double>(clip.num_frames, 0.0)};

@@ -23,6 +23,7 @@
 #include "processing/core/motion_clip.h"
 #include "processing/core/skeleton.h"
 #include "processing/motion/foot_contacts.h"
+#include "processing/motion/swing_clearance.h"
 #include "processing/motion/two_bone_ik.h"
 #include "processing/retargeting/rig_mapping.h"
 
@@ -85,8 +86,10 @@ struct FootPlantOptions {
   // length smoothly rather than snapping the knee straight (0: plain two-bone IK).
   double soft_reach = 0.05;
   // Every frame's heel and toe are kept at or above their floor (their lowest heights at the
-  // leg's keys): between keys, slerped legs and a linearly interpolated root sink them.
+  // leg's keys): between keys, slerped legs and a linearly interpolated root sink them. With it,
+  // a swinging foot clears the floor as `swing` asks.
   bool keep_above_floor = true;
+  SwingClearanceOptions swing;
 };
 
 struct FootContact {
