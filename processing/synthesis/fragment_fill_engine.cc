@@ -48,6 +48,7 @@ struct FragmentContext {
   std::vector<int> moving;  // per fragment: 1 where the sketch's root moves (TravellingFragments)
   Eigen::VectorXd sketch_sway;               // LateralSway of the keyed root (gait_sway.h), else empty
   const Eigen::VectorXd* db_sway = nullptr;  // the database's, with sketch_sway
+  std::vector<int> swaying;                  // per fragment: 1 where the sway ranks leg candidates
 };
 
 // A group's matching drivers: `driven`, or `moving` (when not empty) in the fragments where the
@@ -140,7 +141,7 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const GroupDrivers& driv
     r.candidates = MatchFragmentsBySet(*ctx.mdb, match, ctx.fragments, {drivers.driven, drivers.moving}, ctx.moving,
                                        *ctx.options);
   if (drivers.by_sway && ctx.db_sway)
-    RankBySway(*ctx.mdb, *ctx.db, ctx.fragments, ctx.moving, ctx.sketch_sway, *ctx.db_sway,
+    RankBySway(*ctx.mdb, *ctx.db, ctx.fragments, ctx.swaying, ctx.sketch_sway, *ctx.db_sway,
                ctx.options->leg_sway_weight, r.candidates);
   timer.Mark("match");
   JoinInputs join{ctx.db, ctx.mdb, &r.candidates, targets, ctx.sigma, ctx.options->transition_gamma};
@@ -375,7 +376,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
-  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db), {}, {}, nullptr};
+  FragmentContext ctx{&db, nullptr, &s, &options, {}, ChannelSigma(db), {}, {}, nullptr, {}};
   ASSIGN_OR_RETURN(ctx.fragments, FragmentSketch(s, master, band, rate));
   ctx.moving = TravellingFragments(db, s, ctx.fragments, options.moving_speed_m_per_s);
   report.master_channel = db.ChannelName(master);
@@ -430,6 +431,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     Eigen::MatrixXd features(s.frames, kNumRootFeatures);
     for (int k = 0; k < kNumRootFeatures; ++k) features.col(k) = s.values.col(db.RootFeatureChannel(k));
     ctx.sketch_sway = LateralSway(features, rate, half_window);
+    ctx.swaying = TravellingFragments(db, s, ctx.fragments, options.sway_speed_m_per_s);
     ctx.db_sway = &db_sway;
   }
   const std::vector<DrivenChannel> all_keyed = AllKeyedDrivers(db, s, options);

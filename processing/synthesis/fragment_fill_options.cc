@@ -22,6 +22,8 @@ Status FragmentFillOptions::Validate() const {
   if (!(lead_detail >= 0.0 && lead_detail <= 2.0)) return RangeError("lead_detail", lead_detail, "[0, 2]");
   if (!(leg_sway_weight >= 0.0 && leg_sway_weight <= 1000.0))
     return RangeError("leg_sway_weight", leg_sway_weight, "[0, 1000]");
+  if (!(sway_speed_m_per_s >= 0.0 && std::isfinite(sway_speed_m_per_s)))
+    return RangeError("sway_speed_m_per_s", sway_speed_m_per_s, "[0, inf)");
   if (consensus_iterations < 0 || consensus_iterations > 100)
     return RangeError("consensus_iterations", consensus_iterations, "[0, 100]");
   if (!(consensus_floor_m > 0.0 && consensus_floor_m <= 1.0))

@@ -94,6 +94,10 @@ struct FragmentFillOptions {
   // 1 + weight * (1 - agreement) / 2, agreement the cosine of the sways; gait_sway.h): they
   // stepped in anti-phase, planting a foot where the capture's swung; 0: matched without.
   double leg_sway_weight = 10.0;
+  // ... in the fragments whose root moves faster than this: slow walks (0.45 - 0.6 m/s) sway
+  // as clearly as brisk ones and stepped in anti-phase as often; below it a standing sketch's
+  // sway is noise.
+  double sway_speed_m_per_s = 0.45;
   double fragment_band_hz = 1.0;  // master band by its peak frequency (L3 at 30 Hz: stride)
   double match_band_hz = 1.0;     // matching band for MatchSignal::kBand
   int match_samples = 8;          // samples per driven channel after time-stretching

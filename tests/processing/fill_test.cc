@@ -70,6 +70,9 @@ TEST(FillOptions, ValidateRejectsEveryOutOfRangeField) {
   o.leg_sway_weight = -1.0;
   EXPECT_FALSE(o.Validate().ok());
   o = {};
+  o.sway_speed_m_per_s = std::nan("");
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
   o.moving_travel_weight = -1.0;
   EXPECT_FALSE(o.Validate().ok());
   o = {};
