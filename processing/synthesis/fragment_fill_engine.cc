@@ -17,6 +17,7 @@
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
 #include "processing/synthesis/limb_reach.h"
+#include "processing/synthesis/swing_gain.h"
 #include "processing/synthesis/local_regression.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"
@@ -493,6 +494,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     }
   }
   DropFinestBands(synthesized, options.synthesized_finest_band, out);
+  if (options.method == FillMethod::kHierarchical)
+    ScaleSwing(JointChannels(joints), options.swing_gain, static_cast<int>(std::lround(kSwingHalfWindowS * rate)), out);
   out += lead_detail;
   if (options.texture) {
     std::vector<int> keyed_channels;

@@ -20,6 +20,7 @@ Status FragmentFillOptions::Validate() const {
   if (!(local_ridge >= 0.0 && local_ridge <= 100.0)) return RangeError("local_ridge", local_ridge, "[0, 100]");
   if (!(limb_reach >= 0.0 && limb_reach <= 1.0)) return RangeError("limb_reach", limb_reach, "[0, 1]");
   if (!(lead_detail >= 0.0 && lead_detail <= 2.0)) return RangeError("lead_detail", lead_detail, "[0, 2]");
+  if (!(swing_gain >= 0.0 && swing_gain <= 3.0)) return RangeError("swing_gain", swing_gain, "[0, 3]");
   if (!(leg_sway_weight >= 0.0 && leg_sway_weight <= 1000.0))
     return RangeError("leg_sway_weight", leg_sway_weight, "[0, 1000]");
   if (!(sway_speed_m_per_s >= 0.0 && std::isfinite(sway_speed_m_per_s)))

@@ -89,6 +89,10 @@ struct FragmentFillOptions {
   // bands (those synthesized_finest_band takes off the blend): the average of many takes cancels
   // their detail (its jerk was 0.54 - 0.67 of the capture's), one take has it; 0: none.
   double lead_detail = 0.7;
+  // Hierarchical: each synthesised joint's swing about its 1 s moving average is scaled by this
+  // (swing_gain.h): the blend's candidates swing out of phase with each other and partly cancel;
+  // 1: the blend as it is.
+  double swing_gain = 1.2;
   // Hierarchical: where the keyed root moves, a synthesised leg's candidates whose hips sway
   // over the other foot than the sketch's count as this much farther (distance times
   // 1 + weight * (1 - agreement) / 2, agreement the cosine of the sways; gait_sway.h): they

@@ -553,6 +553,7 @@ TEST(Fill, SynthesisedLegsBlendFewerCandidates) {
   for (int leg_blend : {32, 128}) {
     FillOptions options;
     options.leg_blend = leg_blend;
+    options.swing_gain = 1.0;  // the steps as blended: the gain puts back part of what a wide blend blurs
     Result<FillResult> r = engine.Fill(*sketch, options);
     ASSERT_TRUE(r.ok()) << r.status().message();
     int leg_sources = 0;
@@ -567,7 +568,9 @@ TEST(Fill, SynthesisedLegsBlendFewerCandidates) {
     mpjpe[leg_blend] = m->mpjpe_unkeyed_cm;
   }
   std::printf("legs MPJPE %.3f cm blending 32, %.3f cm blending 128\n", mpjpe[32], mpjpe[128]);
-  EXPECT_LT(mpjpe[32], 0.95 * mpjpe[128]);  // measured 4.226 against 4.833 cm (4.460 / 5.127 before --leg-drivers)
+  // Measured 4.171 against 4.649 cm (4.460 / 5.127 before --leg-drivers); with the swing
+  // scaled by 1.2, 4.041 against 4.116.
+  EXPECT_LT(mpjpe[32], 0.95 * mpjpe[128]);
 }
 
 // Root and legs keyed every 8 frames on standing gestures of a style the database lacks: each

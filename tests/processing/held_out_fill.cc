@@ -1,8 +1,13 @@
 #include "tests/processing/held_out_fill.h"
 
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
 #include "formats/motion_io.h"
 #include "processing/evaluation/scenarios.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "tests/support/default_db.h"
 #include "tests/support/test_paths.h"
 
 namespace mocapfill::testing {
@@ -54,6 +59,25 @@ VariantScores ScoreVariants(const std::vector<std::vector<FillMetrics>>& metrics
       scores.key_error_max_deg = std::max(scores.key_error_max_deg, take[v].key_error_max_deg);
     }
   for (size_t v = 0; v < variants; ++v) scores.skate_cm_per_s[v] /= std::max(1.0, contacts[v]);
+  return scores;
+}
+
+std::optional<VariantScores> ScoreBeforeAndNow(const std::string& style, const std::string& scenario,
+                                               const std::vector<std::string>& takes, const FillOptions& before) {
+  const MotionDatabase& db = BandaiDbWithout(style);
+  FillEngine engine(db);
+  Result<std::vector<std::vector<FillMetrics>>> m =
+      FillHeldOutTakes(engine, db, scenario, takes, {before, FillOptions{}});
+  if (!m.ok()) {
+    ADD_FAILURE() << m.status().message();
+    return std::nullopt;
+  }
+  const VariantScores scores = ScoreVariants(*m);
+  EXPECT_LT(scores.key_error_max_deg, 0.01);
+  std::printf("%s scenario, %s locomotion: before %.3f cm, feet %.2f cm/s on the capture's contacts; now %.3f cm, "
+              "%.2f cm/s\n",
+              scenario.c_str(), style.c_str(), scores.mpjpe_cm[0], scores.skate_cm_per_s[0], scores.mpjpe_cm[1],
+              scores.skate_cm_per_s[1]);
   return scores;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,5 +42,12 @@ struct VariantScores {
   double key_error_max_deg = 0.0;
 };
 VariantScores ScoreVariants(const std::vector<std::vector<FillMetrics>>& metrics);
+
+// Fills `takes` of the held-out `style` as `scenario` sketches against the other styles
+// (BandaiDbWithout), with `before` and with the default options (variants 0 and 1); checks
+// the keys (a test failure otherwise), prints both and returns their scores, or nothing when
+// a fill fails (the failure recorded).
+std::optional<VariantScores> ScoreBeforeAndNow(const std::string& style, const std::string& scenario,
+                                               const std::vector<std::string>& takes, const FillOptions& before);
 
 }  // namespace mocapfill::testing

@@ -57,6 +57,9 @@ std::vector<OptionSpec> FillMethodOptionSpecs() {
       NumberOption("lead_detail", d.lead_detail, 0.0, false, 2.0, "",
                    "hierarchical: share of the joined take's finest detail put back into each upper-body group's "
                    "blend, which averages it away (0 = the blend's smooth curves)"),
+      NumberOption("swing_gain", d.swing_gain, 0.0, false, 3.0, "",
+                   "hierarchical: scale of each synthesised joint's swing about its 1 s moving average, which the "
+                   "blend's candidates, a little out of phase, partly cancel (1 = the blend as it is)"),
       StringOption("match", "lowpass", {"lowpass", "band"},
                    "matching signal: lowpass (sketch-filtered curves) or band (band-pass only)"),
       WithFlag(NumberOption("context_fraction", d.context_fraction, 0.0, false, 2.0, "",
@@ -171,6 +174,7 @@ Result<FillOptions> FillOptionsFrom(const NodeOptions& o, const std::function<st
   options.limb_reach = o.Number("limb_reach");
   options.consensus_iterations = o.Int("consensus");
   options.lead_detail = o.Number("lead_detail");
+  options.swing_gain = o.Number("swing_gain");
   options.root_drives = o.Bool("root_drives");
   options.leg_drivers = o.Int("leg_drivers");
   options.synthesized_driver_weight = o.Number("synthesized_driver_weight");
