@@ -17,10 +17,10 @@
 #include "processing/synthesis/hierarchical/hierarchy.h"
 #include "processing/synthesis/joining.h"
 #include "processing/synthesis/limb_reach.h"
-#include "processing/synthesis/swing_gain.h"
 #include "processing/synthesis/local_regression.h"
 #include "processing/synthesis/matching_database.h"
 #include "processing/synthesis/sketch_signals.h"
+#include "processing/synthesis/swing_gain.h"
 #include "processing/texturing/repin_keys.h"
 #include "processing/texturing/texture_channels.h"
 
@@ -494,7 +494,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
     }
   }
   DropFinestBands(synthesized, options.synthesized_finest_band, out);
-  if (options.method == FillMethod::kHierarchical)
+  // A single take (blend 1) has nothing cancelled to give back.
+  if (options.method == FillMethod::kHierarchical && options.blend > 1)
     ScaleSwing(JointChannels(joints), options.swing_gain, static_cast<int>(std::lround(kSwingHalfWindowS * rate)), out);
   out += lead_detail;
   if (options.texture) {

@@ -91,7 +91,7 @@ struct FragmentFillOptions {
   double lead_detail = 0.7;
   // Hierarchical: each synthesised joint's swing about its 1 s moving average is scaled by this
   // (swing_gain.h): the blend's candidates swing out of phase with each other and partly cancel;
-  // 1: the blend as it is.
+  // 1: the blend as it is (so is a single take, blend 1).
   double swing_gain = 1.2;
   // Hierarchical: where the keyed root moves, a synthesised leg's candidates whose hips sway
   // over the other foot than the sketch's count as this much farther (distance times
