@@ -402,7 +402,8 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   std::vector<int> joints;
   for (int j = 0; j < db.num_joints(); ++j)
     if (!fixed[j]) joints.push_back(j);
-  std::vector<int> synthesized = JointChannels(joints);
+  const std::vector<int> joint_channels = JointChannels(joints);
+  std::vector<int> synthesized = joint_channels;
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
   const std::vector<std::uint8_t> hanging = HangingJoints(db);
   // Keyed legs carry the sketch's gait (moving_travel_weight) and, textured, are planted on
@@ -496,7 +497,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   DropFinestBands(synthesized, options.synthesized_finest_band, out);
   // A single take (blend 1) has nothing cancelled to give back.
   if (options.method == FillMethod::kHierarchical && options.blend > 1)
-    ScaleSwing(JointChannels(joints), options.swing_gain, static_cast<int>(std::lround(kSwingHalfWindowS * rate)), out);
+    ScaleSwing(joint_channels, options.swing_gain, static_cast<int>(std::lround(kSwingHalfWindowS * rate)), out);
   out += lead_detail;
   if (options.texture) {
     std::vector<int> keyed_channels;

@@ -73,6 +73,11 @@ TEST(FillOptions, ValidateRejectsEveryOutOfRangeField) {
   o.sway_speed_m_per_s = std::nan("");
   EXPECT_FALSE(o.Validate().ok());
   o = {};
+  o.swing_gain = -0.1;
+  EXPECT_FALSE(o.Validate().ok());
+  o.swing_gain = 3.5;
+  EXPECT_FALSE(o.Validate().ok());
+  o = {};
   o.moving_travel_weight = -1.0;
   EXPECT_FALSE(o.Validate().ok());
   o = {};
