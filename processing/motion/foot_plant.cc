@@ -95,11 +95,12 @@ bool HasKeys(const std::vector<bool>& pinned) { return std::find(pinned.begin(),
 // the next (room to let one hold go and take up the other without a pop: with keys every 16
 // frames most often, every 8 seldom, every 4 never), it stands at the key until it lifts and
 // from where it lands until the next key: keys sparser than a step fall once or twice in it
-// and missed most of the capture's contacts. What the vote has standing away from both keys
-// is dropped, and so is a contact from key to key.
+// and missed most of the capture's contacts. A contact from key to key is dropped; one the
+// vote has standing away from both keys only where less than `mid_swing_s` parts it from a
+// key's stance or the key (FootPlantOptions::keyed_mid_contact_swing_s).
 void DropVotesTheKeysDeny(const std::vector<Vector3d>& track, const std::vector<double>& times,
                           const std::vector<bool>& pinned, double standing_speed, double fade_s,
-                          std::vector<bool>& voted) {
+                          double mid_swing_s, std::vector<bool>& voted) {
   int previous = -1;
   for (int f = 0; f < static_cast<int>(track.size()); ++f) {
     if (!pinned[f]) continue;
@@ -112,7 +113,15 @@ void DropVotesTheKeysDeny(const std::vector<Vector3d>& track, const std::vector<
         if (voted[f])
           while (lands - 1 > previous && voted[lands - 1]) --lands;
         if (times[lands] - times[lifts] <= 2.0 * fade_s) lifts = previous, lands = f;  // no room to swing
-        std::fill(voted.begin() + lifts + 1, voted.begin() + lands, false);
+        for (int a = lifts + 1; a < lands; ++a) {
+          if (!voted[a]) continue;
+          int b = a;
+          while (b + 1 < lands && voted[b + 1]) ++b;
+          const bool apart = mid_swing_s > 0.0 && times[a] - times[lifts] >= mid_swing_s &&
+                             times[lands] - times[b] >= mid_swing_s;
+          if (!apart) std::fill(voted.begin() + a, voted.begin() + b + 1, false);
+          a = b;
+        }
       }
     }
     previous = f;
@@ -148,7 +157,8 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
   const bool keyed = HasKeys(pinned);
   std::vector<bool> voted = is_given ? given : std::vector<bool>(track.size(), false);
   if (is_given && keyed)
-    DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s, voted);
+    DropVotesTheKeysDeny(track, times, pinned, options.keyed_standing_speed_m_per_s, options.fade_s,
+                         options.keyed_mid_contact_swing_s, voted);
   const double floor = FloorOf(track, pinned);
   JointContacts out{is_given && !keyed ? voted : DetectContacts(track, times, floor, options.detection, &hips),
                     std::vector<Vector3d>(track.size(), Vector3d::Zero()), std::vector<bool>(track.size(), false),

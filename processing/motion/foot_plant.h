@@ -69,6 +69,12 @@ struct FootPlantOptions {
   // (key_still_m_per_s), so a long hold no longer drags a standing leg onto a take's steps.
   double max_keyed_given_correction_m = 0.6;
   double keyed_standing_speed_m_per_s = 0.3;
+  // Between two such keys a contact of the takes that touches neither key's stance is held too
+  // where a swing of at least this long parts it from each (the stance's last frame or the key
+  // to its first, its last to the next stance or key): keys every 16 frames fall between most
+  // of a run's short contacts. Touching a key that has the foot elsewhere, it would drag the
+  // key's swing (0: such contacts are not held).
+  double keyed_mid_contact_swing_s = 0.05;
   // A keyed foot on the ground at two consecutive keys of its leg that moves slower than this
   // from one to the other stands between them, height included, however far the fill strays:
   // keys sparser than a step let the texture's take step there (keys every 16 frames: a
