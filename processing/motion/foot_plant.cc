@@ -113,14 +113,12 @@ void DropVotesTheKeysDeny(const std::vector<Vector3d>& track, const std::vector<
         if (voted[f])
           while (lands - 1 > previous && voted[lands - 1]) --lands;
         if (times[lands] - times[lifts] <= 2.0 * fade_s) lifts = previous, lands = f;  // no room to swing
-        for (int a = lifts + 1; a < lands; ++a) {
-          if (!voted[a]) continue;
-          int b = a;
-          while (b + 1 < lands && voted[b + 1]) ++b;
-          const bool apart = mid_swing_s > 0.0 && times[a] - times[lifts] >= mid_swing_s &&
-                             times[lands] - times[b] >= mid_swing_s;
-          if (!apart) std::fill(voted.begin() + a, voted.begin() + b + 1, false);
-          a = b;
+        const std::vector<bool> between(voted.begin() + lifts + 1, voted.begin() + lands);
+        for (const auto& [a, b] : ContactRuns(between)) {
+          const int first = lifts + 1 + a, last = lifts + 1 + b;
+          const bool apart = mid_swing_s > 0.0 && times[first] - times[lifts] >= mid_swing_s &&
+                             times[lands] - times[last] >= mid_swing_s;
+          if (!apart) std::fill(voted.begin() + first, voted.begin() + last + 1, false);
         }
       }
     }
