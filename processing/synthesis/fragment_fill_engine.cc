@@ -122,8 +122,8 @@ std::vector<std::vector<double>> BlendWeights(const FragmentContext& ctx, const 
     if (ridge <= 0.0 || set.size() < 2) continue;
     std::vector<int> rows;
     for (int k : set) rows.push_back(cands[k].fragment);
-    weights[i] = LocalLinearWeights(ScaledDatabaseFeatures(*ctx.mdb, features, rows), queries.row(i).transpose(),
-                                    weights[i], ridge);
+    weights[i] = LocalLinearWeights(ScaledDatabaseFeatures(*ctx.mdb, features, rows, ctx.fragments[i], *ctx.options),
+                                    queries.row(i).transpose(), weights[i], ridge);
   }
   return weights;
 }
@@ -165,7 +165,8 @@ GroupResult SynthesiseGroup(const FragmentContext& ctx, const GroupDrivers& driv
   return r;
 }
 
-// The blended takes' planar root speed over fragment i's matched frames, weighted as blended.
+// The blended takes' planar root speed over fragment i's matched frames, as stretched onto the
+// fragment, weighted as blended.
 double BlendedTravel(const FragmentContext& ctx, const GroupResult& r, size_t i, int blend) {
   const MotionDatabase& db = *ctx.db;
   if (db.root_joint() < 0) return 0.0;
@@ -179,7 +180,7 @@ double BlendedTravel(const FragmentContext& ctx, const GroupResult& r, size_t i,
     double speed = 0.0;
     for (int f = g.first; f <= g.last; ++f)
       speed += std::hypot(db.signals()(row + f, forward), db.signals()(row + f, lateral));
-    travel += weights[k] * speed / (g.last - g.first + 1);
+    travel += weights[k] * StretchSpeedRatio(g, ctx.fragments[i]) * speed / (g.last - g.first + 1);
   }
   // The regression's weights may extrapolate past the slowest candidates: they stand.
   return std::max(0.0, travel);
@@ -244,8 +245,8 @@ CoverageReport MeasureSketchCoverage(const FragmentContext& ctx, CoverageYardsti
   for (const DrivenChannel& d : driven) channels.push_back(d.channel);
   if (!yardstick.Serves(channels, options)) {
     yardstick = {ReferenceDistance(*ctx.mdb, driven, options), channels, options.root_feature_weight,
-                 options.min_length_ratio,
-                 options.max_length_ratio, options.coverage.reference_fragments};
+                 options.min_length_ratio, options.max_length_ratio, options.stretched_travel,
+                 options.coverage.reference_fragments};
   }
   FragmentFillOptions nearest_only = options;
   nearest_only.candidates = 1;
@@ -372,8 +373,13 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
                          CoverageYardstick& yardstick, std::unique_ptr<DatabaseContacts>& contacts,
                          std::unique_ptr<ArmReach>& arm_reach, GroupPositionCache& group_positions,
                          Eigen::VectorXd& db_sway, const SketchSignals& s,
-                         const FragmentFillOptions& options, Eigen::MatrixXd& out, FragmentFillReport& report,
+                         const FragmentFillOptions& requested, Eigen::MatrixXd& out, FragmentFillReport& report,
                          StageTimer& timer) {
+  const std::vector<std::uint8_t> hanging = HangingJoints(db);
+  // Keyed legs carry the sketch's pace themselves: their takes are matched at captured speed.
+  FragmentFillOptions options = requested;
+  for (int j = 0; j < db.num_joints(); ++j)
+    if (s.keyed[3 * j] && hanging[j]) options.stretched_travel = false;
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -405,7 +411,6 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   const std::vector<int> joint_channels = JointChannels(joints);
   std::vector<int> synthesized = joint_channels;
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
-  const std::vector<std::uint8_t> hanging = HangingJoints(db);
   // Keyed legs carry the sketch's gait (moving_travel_weight) and, textured, are planted on
   // their texture's take's contacts too (VoteContacts below).
   std::vector<int> keyed_legs;

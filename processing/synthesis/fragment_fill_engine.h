@@ -32,12 +32,13 @@ struct CoverageYardstick {
   double distance = -1.0;
   std::vector<int> channels;
   double root_feature_weight = 0.0, min_length_ratio = 0.0, max_length_ratio = 0.0;
+  bool stretched_travel = false;
   int reference_fragments = 0;
 
   bool Serves(const std::vector<int>& driven_channels, const FragmentFillOptions& o) const {
     return distance >= 0.0 && channels == driven_channels && root_feature_weight == o.root_feature_weight &&
            min_length_ratio == o.min_length_ratio && max_length_ratio == o.max_length_ratio &&
-           reference_fragments == o.coverage.reference_fragments;
+           stretched_travel == o.stretched_travel && reference_fragments == o.coverage.reference_fragments;
   }
 };
 

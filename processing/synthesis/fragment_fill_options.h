@@ -108,6 +108,12 @@ struct FragmentFillOptions {
   double context_fraction = 0.0;  // matching window extends each fragment by this share per side
   double min_length_ratio = 0.67;  // accepted database/sketch fragment length ratios
   double max_length_ratio = 1.5;
+  // Where the sketch keys no leg, matching (and the blend's regression) compares the root's
+  // velocities as each take moves them once stretched onto the sketch's fragment
+  // (StretchSpeedRatio, fragment_matching.h), the pace its synthesised feet step at. Keyed legs
+  // carry the sketch's pace themselves, and there it did not win (docs/fill.md, step 4).
+  // false: as captured everywhere.
+  bool stretched_travel = true;
   double seam_window_s = 0.25;     // seam smoothing reach on each side
   double crossfade = 1.5;          // > 0: fragments overlap by this share of their length and are cross-faded
   double transition_gamma = 0.5;   // cost matrix: weight of the velocity jump at seams

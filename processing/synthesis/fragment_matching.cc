@@ -6,17 +6,11 @@
 #include <thread>
 
 #include "processing/analysis/phases.h"
+#include "processing/core/signal_layout.h"
 
 namespace mocapfill {
 
 namespace {
-
-// Query rows (fragments x features) and the database columns they use, both scaled so that
-// a squared Euclidean distance is the weighted, normalised matching distance.
-struct ScaledProblem {
-  Eigen::MatrixXf queries;
-  Eigen::MatrixXf database;
-};
 
 // Per driven channel: its column among the matching channels and the factor that makes a
 // squared Euclidean distance the weighted, normalised matching distance.
@@ -36,6 +30,21 @@ Scaling ScalingOf(const MatchingDatabase& mdb, const std::vector<DrivenChannel>&
     scaling.factor[i] = static_cast<float>(std::sqrt(driven[i].weight / (total_weight * mdb.samples())) / sigma);
   }
   return scaling;
+}
+
+// The columns of a scaled row (sample-major, as ScaledDatabase lays them out) that hold the
+// root's velocities, which a time-stretch scales; none unless options.stretched_travel.
+std::vector<int> VelocityColumns(const MatchingDatabase& mdb, const Scaling& scaling,
+                                 const FragmentFillOptions& options) {
+  if (!options.stretched_travel) return {};
+  const int first_feature = static_cast<int>(mdb.channel_sigma().size()) - kNumRootFeatures;
+  const int nd = static_cast<int>(scaling.columns.size());
+  std::vector<int> columns;
+  for (int s = 0; s < mdb.samples(); ++s)
+    for (int i = 0; i < nd; ++i)
+      if (scaling.columns[i] >= first_feature && IsRootVelocityFeature(scaling.columns[i] - first_feature))
+        columns.push_back(s * nd + i);
+  return columns;
 }
 
 // The scaled features of the listed database fragments, or of all of them (rows null).
@@ -73,13 +82,6 @@ Eigen::MatrixXf ScaledQueries(const MatchingDatabase& mdb, const Eigen::MatrixXd
   return queries;
 }
 
-ScaledProblem Scale(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
-                    const std::vector<SketchFragment>& fragments, const std::vector<DrivenChannel>& driven,
-                    const FragmentFillOptions& options) {
-  const Scaling scaling = ScalingOf(mdb, driven);
-  return {ScaledQueries(mdb, sketch_match, fragments, scaling, options), ScaledDatabase(mdb, scaling)};
-}
-
 }  // namespace
 
 Eigen::MatrixXf ScaledSketchFeatures(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
@@ -89,17 +91,53 @@ Eigen::MatrixXf ScaledSketchFeatures(const MatchingDatabase& mdb, const Eigen::M
 }
 
 Eigen::MatrixXf ScaledDatabaseFeatures(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven,
-                                       const std::vector<int>& fragments) {
-  return ScaledDatabase(mdb, ScalingOf(mdb, driven), &fragments);
+                                       const std::vector<int>& fragments, const SketchFragment& query,
+                                       const FragmentFillOptions& options) {
+  const Scaling scaling = ScalingOf(mdb, driven);
+  Eigen::MatrixXf features = ScaledDatabase(mdb, scaling, &fragments);
+  const std::vector<int> velocity = VelocityColumns(mdb, scaling, options);
+  for (size_t r = 0; r < fragments.size(); ++r) {
+    const float ratio = static_cast<float>(StretchSpeedRatio(mdb.fragments()[fragments[r]], query));
+    for (int c : velocity) features(static_cast<Eigen::Index>(r), c) *= ratio;
+  }
+  return features;
+}
+
+double StretchSpeedRatio(const DbFragment& db, const SketchFragment& query) {
+  return double(std::max(1, db.last - db.first)) / std::max(1, query.last - query.first);
 }
 
 namespace {
 
 bool Admissible(const SketchFragment& query, const DbFragment& db, const FragmentFillOptions& options) {
   if (query.rising != db.rising) return false;
-  const double ratio = double(std::max(1, db.last - db.first)) / std::max(1, query.last - query.first);
+  const double ratio = StretchSpeedRatio(db, query);
   return ratio >= options.min_length_ratio && ratio <= options.max_length_ratio;
 }
+
+// The velocity columns of a scaled database and their squared norms: with them, a distance
+// from the plain dot product of a query and a row becomes the distance to the row's fragment
+// stretched by ratio r, whose velocities are r times the row's:
+// |q - d|^2 + (r^2 - 1) |d_v|^2 - 2 (r - 1) q_v . d_v.
+struct StretchedVelocities {
+  StretchedVelocities(const Eigen::MatrixXf& database, std::vector<int> velocity_columns)
+      : columns(std::move(velocity_columns)), rows(database.rows(), static_cast<Eigen::Index>(columns.size())) {
+    for (size_t k = 0; k < columns.size(); ++k) rows.col(static_cast<Eigen::Index>(k)) = database.col(columns[k]);
+    norms = rows.rowwise().squaredNorm();
+  }
+  // q_v . d_v for every row.
+  Eigen::VectorXf Dots(const Eigen::MatrixXf& queries, Eigen::Index query) const {
+    Eigen::VectorXf q(static_cast<Eigen::Index>(columns.size()));
+    for (size_t k = 0; k < columns.size(); ++k) q[static_cast<Eigen::Index>(k)] = queries(query, columns[k]);
+    return rows * q;
+  }
+  float Correction(Eigen::Index row, float ratio, float dot) const {
+    return (ratio * ratio - 1.0f) * norms[row] - 2.0f * (ratio - 1.0f) * dot;
+  }
+  std::vector<int> columns;
+  Eigen::MatrixXf rows;
+  Eigen::VectorXf norms;
+};
 
 std::vector<Candidate> Best(std::vector<Candidate> all, int k) {
   const auto less = [](const Candidate& a, const Candidate& b) {
@@ -159,17 +197,22 @@ namespace {
 std::vector<std::vector<Candidate>> BestMatches(const MatchingDatabase& mdb, const Eigen::MatrixXf& queries,
                                                 const Eigen::MatrixXf& database,
                                                 const std::vector<SketchFragment>& fragments,
+                                                const std::vector<int>& velocity_columns,
                                                 const FragmentFillOptions& options) {
   const Eigen::VectorXf db_norms = database.rowwise().squaredNorm();
   const Eigen::VectorXf query_norms = queries.rowwise().squaredNorm();
+  const StretchedVelocities velocity(database, velocity_columns);
   const int nf = static_cast<int>(fragments.size());
   std::vector<std::vector<Candidate>> result(nf);
   auto work = [&](int f) {
     const Eigen::VectorXf dots = database * queries.row(f).transpose();
+    const Eigen::VectorXf velocity_dots = velocity.Dots(queries, f);
     std::vector<Candidate> admissible, any;
     admissible.reserve(mdb.fragments().size());
     for (Eigen::Index r = 0; r < dots.size(); ++r) {
-      const float d = std::max(0.0f, query_norms[f] + db_norms[r] - 2.0f * dots[r]);
+      const float ratio = static_cast<float>(StretchSpeedRatio(mdb.fragments()[r], fragments[f]));
+      const float d = std::max(
+          0.0f, query_norms[f] + db_norms[r] - 2.0f * dots[r] + velocity.Correction(r, ratio, velocity_dots[r]));
       const Candidate c{static_cast<int>(r), d};
       if (Admissible(fragments[f], mdb.fragments()[r], options)) {
         admissible.push_back(c);
@@ -189,8 +232,9 @@ std::vector<std::vector<Candidate>> MatchFragments(const MatchingDatabase& mdb, 
                                                    const std::vector<SketchFragment>& fragments,
                                                    const std::vector<DrivenChannel>& driven,
                                                    const FragmentFillOptions& options) {
-  const ScaledProblem p = Scale(mdb, sketch_match, fragments, driven, options);
-  return BestMatches(mdb, p.queries, p.database, fragments, options);
+  const Scaling scaling = ScalingOf(mdb, driven);
+  return BestMatches(mdb, ScaledQueries(mdb, sketch_match, fragments, scaling, options), ScaledDatabase(mdb, scaling),
+                     fragments, VelocityColumns(mdb, scaling, options), options);
 }
 
 std::vector<std::vector<Candidate>> MatchFragmentsBySet(const MatchingDatabase& mdb,
@@ -223,7 +267,8 @@ std::vector<std::vector<Candidate>> MatchFragmentsBySet(const MatchingDatabase& 
     }
     const Eigen::MatrixXf& database = set > 0 ? other : gathered;
     std::vector<std::vector<Candidate>> matched =
-        BestMatches(mdb, ScaledQueries(mdb, sketch_match, some, scaling, options), database, some, options);
+        BestMatches(mdb, ScaledQueries(mdb, sketch_match, some, scaling, options), database, some,
+                    VelocityColumns(mdb, scaling, options), options);
     for (size_t k = 0; k < index.size(); ++k) result[index[k]] = std::move(matched[k]);
   }
   return result;
@@ -241,8 +286,10 @@ std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb,
                                              const std::vector<int>& queries,
                                              const std::vector<DrivenChannel>& driven,
                                              const FragmentFillOptions& options) {
-  const Eigen::MatrixXf database = ScaledDatabase(mdb, ScalingOf(mdb, driven));
+  const Scaling scaling = ScalingOf(mdb, driven);
+  const Eigen::MatrixXf database = ScaledDatabase(mdb, scaling);
   const Eigen::VectorXf norms = database.rowwise().squaredNorm();
+  const StretchedVelocities velocity(database, VelocityColumns(mdb, scaling, options));
   const std::vector<DbFragment>& all = mdb.fragments();
   std::vector<float> nearest(queries.size(), std::numeric_limits<float>::infinity());
   ForEachIndex(static_cast<int>(queries.size()), options.threads, [&](int q) {
@@ -250,9 +297,13 @@ std::vector<float> NearestOtherTakeDistances(const MatchingDatabase& mdb,
     const DbFragment& own = all[row];
     const SketchFragment as_sketch{own.first, own.last, own.rising};
     const Eigen::VectorXf dots = database * database.row(row).transpose();
-    for (Eigen::Index r = 0; r < dots.size(); ++r)
-      if (all[r].clip != own.clip && Admissible(as_sketch, all[r], options))
-        nearest[q] = std::min(nearest[q], std::max(0.0f, norms[row] + norms[r] - 2.0f * dots[r]));
+    const Eigen::VectorXf velocity_dots = velocity.Dots(database, row);
+    for (Eigen::Index r = 0; r < dots.size(); ++r) {
+      if (all[r].clip == own.clip || !Admissible(as_sketch, all[r], options)) continue;
+      const float ratio = static_cast<float>(StretchSpeedRatio(all[r], as_sketch));
+      const float d = norms[row] + norms[r] - 2.0f * dots[r] + velocity.Correction(r, ratio, velocity_dots[r]);
+      nearest[q] = std::min(nearest[q], std::max(0.0f, d));
+    }
   });
   return nearest;
 }

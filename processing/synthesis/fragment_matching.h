@@ -34,6 +34,13 @@ struct DrivenChannel {
   double weight = 1.0;
 };
 
+// How much faster a database fragment moves once stretched onto a sketch fragment's frames:
+// its length over the sketch fragment's. With options.stretched_travel, matching (and the
+// blend's regression) compares the root's velocities as the stretched take moves them, the
+// pace its feet step at in the fill, not as captured: a walk stretched out onto a slow
+// sketch's steps otherwise counted as fast as it was captured, and lost to takes that stand.
+double StretchSpeedRatio(const DbFragment& db, const SketchFragment& query);
+
 // Cuts the sketch on the band `band` of its densified channel `master_channel`.
 Result<std::vector<SketchFragment>> FragmentSketch(const SketchSignals& sketch, int master_channel, int band,
                                                    double rate_hz);
@@ -61,12 +68,14 @@ std::vector<std::vector<Candidate>> MatchFragmentsBySet(const MatchingDatabase& 
 
 // Matching features scaled so that a squared Euclidean distance between two rows is the
 // distance MatchFragments measures: one row per sketch fragment, or per listed database
-// fragment (indices into MatchingDatabase::fragments(), rows in that order).
+// fragment (indices into MatchingDatabase::fragments(), rows in that order), its root
+// velocities those of the fragment stretched onto `query` (where options.stretched_travel).
 Eigen::MatrixXf ScaledSketchFeatures(const MatchingDatabase& mdb, const Eigen::MatrixXd& sketch_match,
                                      const std::vector<SketchFragment>& fragments,
                                      const std::vector<DrivenChannel>& driven, const FragmentFillOptions& options);
 Eigen::MatrixXf ScaledDatabaseFeatures(const MatchingDatabase& mdb, const std::vector<DrivenChannel>& driven,
-                                       const std::vector<int>& fragments);
+                                       const std::vector<int>& fragments, const SketchFragment& query,
+                                       const FragmentFillOptions& options);
 
 // Per sketch fragment: its distance (as MatchFragments measures it) to the database mean
 // pose standing still, the all-zero matching signal: how much there is to explain.
