@@ -376,10 +376,14 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
                          const FragmentFillOptions& requested, Eigen::MatrixXd& out, FragmentFillReport& report,
                          StageTimer& timer) {
   const std::vector<std::uint8_t> hanging = HangingJoints(db);
-  // Keyed legs carry the sketch's pace themselves: their takes are matched at captured speed.
-  FragmentFillOptions options = requested;
+  // Keyed legs carry the sketch's gait: its pace (their takes are matched at captured speed),
+  // moving_travel_weight and, textured, the contacts of their texture's take (VoteContacts below).
+  std::vector<int> keyed_legs;
   for (int j = 0; j < db.num_joints(); ++j)
-    if (s.keyed[3 * j] && hanging[j]) options.stretched_travel = false;
+    if (s.keyed[3 * j] && hanging[j]) keyed_legs.push_back(j);
+  const bool legs_keyed = !keyed_legs.empty();
+  FragmentFillOptions options = requested;
+  options.stretched_travel = requested.stretched_travel && !legs_keyed;
   const double rate = db.rate_hz();
   const int band = BandForFrequency(options.fragment_band_hz, rate, 16);
   const int master = ChooseMasterChannel(s, band, rate);
@@ -411,12 +415,6 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
   const std::vector<int> joint_channels = JointChannels(joints);
   std::vector<int> synthesized = joint_channels;
   synthesized.insert(synthesized.end(), root_targets.begin(), root_targets.end());
-  // Keyed legs carry the sketch's gait (moving_travel_weight) and, textured, are planted on
-  // their texture's take's contacts too (VoteContacts below).
-  std::vector<int> keyed_legs;
-  for (int j = 0; j < db.num_joints(); ++j)
-    if (s.keyed[3 * j] && hanging[j]) keyed_legs.push_back(j);
-  const bool legs_keyed = !keyed_legs.empty();
   const bool legs_synthesized = std::any_of(joints.begin(), joints.end(), [&](int j) { return hanging[j] != 0; });
   if (!contacts && ((options.texture && legs_keyed) || legs_synthesized)) {
     ASSIGN_OR_RETURN(DatabaseContacts found, FindDatabaseContacts(db, hanging));
