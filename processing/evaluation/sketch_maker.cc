@@ -34,6 +34,14 @@ void InterpolateBetweenKeys(MotionClip& clip, int j, const std::vector<int>& key
   }
 }
 
+// Whether joint j moves in `clip`: an animated translation, or a rotation that changes.
+bool Animated(const MotionClip& clip, int j) {
+  if (clip.translation_animated[j]) return true;
+  for (int f = 1; f < clip.num_frames; ++f)
+    if (clip.rotation(f, j).angularDistance(clip.rotation(0, j)) > 1e-9) return true;
+  return false;
+}
+
 }  // namespace
 
 Result<MotionClip> MakeSketch(const Skeleton& skeleton, const MotionClip& truth, const SketchSpec& spec) {
@@ -44,6 +52,20 @@ Result<MotionClip> MakeSketch(const Skeleton& skeleton, const MotionClip& truth,
     const std::optional<int> j = skeleton.Find(name);
     if (!j) return InvalidArgument("keep_joints: joint '" + name + "' is not in the skeleton");
     keep[*j] = true;
+  }
+  // The topmost kept joints move with their ancestors: where the capture animates a joint above
+  // them (a root bone carrying the travel, as some takes of the shared corpus have above their
+  // hips), that joint is keyed too, or the sketch would run in place. Joints between two kept
+  // ones stay dropped (the arms kept with the hips leave the spine to the fill).
+  const std::vector<bool> listed = keep;
+  for (int j = 0; j < skeleton.num_joints(); ++j) {
+    if (!listed[j]) continue;
+    std::vector<int> above;
+    int p = skeleton.parent(j);
+    for (; p >= 0 && !listed[p]; p = skeleton.parent(p)) above.push_back(p);
+    if (p >= 0) continue;  // a kept ancestor carries it
+    for (int a : above)
+      if (Animated(truth, a)) keep[a] = true;
   }
   MotionClip sketch = MotionClip::RestPose(skeleton, truth.num_frames, truth.sample_rate_hz);
   sketch.name = truth.name + ".sketch";

@@ -27,7 +27,10 @@ std::vector<int> SketchKeyFrames(int num_frames, int every);
 // Keeps the listed joints at the key frames and drops every other joint: a kept joint's
 // rotation (and its translation when animated) is interpolated between its keys as a glTF
 // LINEAR sampler would import it (slerp, lerp); a dropped joint holds its rest rotation and
-// has no keys; constant translations are copied from the capture. Errors: a listed joint the skeleton lacks, an empty clip (kInvalidArgument).
+// has no keys; constant translations are copied from the capture. The topmost listed joints
+// keep their world motion: an ancestor the capture animates (a root bone carrying the travel
+// above the hips) is keyed with them. Errors: a listed joint the skeleton lacks, an empty clip
+// (kInvalidArgument).
 Result<MotionClip> MakeSketch(const Skeleton& skeleton, const MotionClip& truth, const SketchSpec& spec);
 
 }  // namespace mocapfill

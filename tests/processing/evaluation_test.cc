@@ -1,12 +1,14 @@
 // Sketch making and fill metrics on a real Bandai-Namco walk (shared corpus).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "formats/motion_io.h"
 #include "processing/evaluation/loso.h"
 #include "processing/evaluation/metrics.h"
 #include "processing/evaluation/sketch_maker.h"
+#include "processing/core/kinematics.h"
 #include "processing/core/rotation.h"
 #include "tests/support/test_paths.h"
 
@@ -64,6 +66,34 @@ TEST(SketchMaker, KeepsListedJointsAtKeysAndDropsTheRest) {
   // Between keys the sketch is the slerp, which differs from the capture.
   EXPECT_GT(GeodesicAngle(sketch->rotation(4, hips), truth.rotation(4, hips)), 0.0);
   EXPECT_LT(GeodesicAngle(sketch->rotation(30, hand), walk.skeleton.joint(hand).rest_rotation), 1e-12);
+}
+
+// Four short takes of the corpus (the normal style's run, dash, second walk and walk backwards)
+// carry their travel on joint_Root, above the hips. The sketch keys that root bone too, so its
+// hips travel as captured; joints between two kept ones (the spine under kept arms) stay dropped.
+TEST(SketchMaker, KeepsTheTravelOfARootBoneAboveTheHips) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<Scene> run = ImportFile(testing::DataPath("bandai-namco-1/data/dataset-1_run_normal_001.bvh"));
+  ASSERT_TRUE(run.ok()) << run.status().message();
+  const Skeleton& skeleton = run->skeleton;
+  const MotionClip& truth = run->clips[0];
+  SketchSpec spec = LegSpec();
+  spec.keep_joints.insert(spec.keep_joints.end(), {"UpperArm_L", "LowerArm_L", "Hand_L"});
+  Result<MotionClip> sketch = MakeSketch(skeleton, truth, spec);
+  ASSERT_TRUE(sketch.ok()) << sketch.status().message();
+  const int root = *skeleton.Find("joint_Root"), hips = *skeleton.Find("Hips");
+  EXPECT_EQ(sketch->keys[root].translation_frames, SketchKeyFrames(truth.num_frames, 8));
+  EXPECT_TRUE(sketch->keys[*skeleton.Find("Chest")].empty());
+  WorldPose captured, sketched;
+  for (int f : sketch->keys[hips].rotation_frames) {
+    ComputeWorldPose(skeleton, truth, f, captured);
+    ComputeWorldPose(skeleton, *sketch, f, sketched);
+    EXPECT_LT((sketched.positions[hips] - captured.positions[hips]).norm(), 1e-9) << "frame " << f;
+  }
+  ComputeWorldPose(skeleton, *sketch, 0, captured);
+  ComputeWorldPose(skeleton, *sketch, truth.num_frames - 1, sketched);
+  const Eigen::Vector3d travel = sketched.positions[hips] - captured.positions[hips];
+  EXPECT_GT(std::hypot(travel.x(), travel.z()), 1.5);  // 24 frames at 2.5 - 2.8 m/s
 }
 
 TEST(FillMetrics, TruthAgainstItselfScoresZero) {
