@@ -25,6 +25,7 @@ Json EvalMetricsJson(const FillMetrics& m) {
           {"floor_steps", m.floor_steps},
           {"capture_floor_glide_cm_per_s", m.capture_floor_glide_cm_per_s},
           {"capture_floor_steps", m.capture_floor_steps},
+          {"foot_peak_ratio", m.foot_peak_ratio},
           {"key_error_mean_deg", m.key_error_mean_deg},
           {"key_error_max_deg", m.key_error_max_deg},
           {"bone_length_error", m.bone_length_error}};
@@ -88,18 +89,18 @@ void PrintProtocolHeader(const EvaluationResult& r, const EvalReportContext& c) 
 }
 
 void PrintHalfTable(const EvaluationResult& r, const std::string& half) {
-  std::printf("%-11s %-13s %5s %-22s %-22s %9s %7s %7s %7s %-20s %6s %-18s %7s %-19s %8s %8s %8s %6s %8s\n",
+  std::printf("%-11s %-13s %5s %-22s %-22s %9s %7s %7s %7s %-20s %6s %-18s %7s %-19s %8s %-16s %8s %8s %6s %8s\n",
               "category", "method", "clips", "unkeyed cm", "below mean %", "keyed-btw", "angle", "NPSS", "jitter",
-              "skate cm/s", "skate%", "pen-max cm", "pen-avg", "glide cm/s", "capture", "key-mean", "key-max", "poor%",
-              "ms/fill");
+              "skate cm/s", "skate%", "pen-max cm", "pen-avg", "glide cm/s", "capture", "foot peak", "key-mean",
+              "key-max", "poor%", "ms/fill");
   for (const char* category : {"locomotion", "gestures", "all"})
     for (const SummaryRow& row : r.summary) {
       if (row.half != half || row.category != category) continue;
       const FillMetrics& m = row.mean;
       const std::string below =
           row.has_below_mean ? WithInterval(row.below_mean.percent, row.below_mean.interval, 1) : "-";
-      std::printf("%-11s %-13s %5d %-22s %-22s %9.3f %7.2f %7.4f %7.3f %-20s %6.1f %-18s %7.2f %-19s %8.1f %8.4f "
-                  "%8.4f %6.1f %8.1f\n",
+      std::printf("%-11s %-13s %5d %-22s %-22s %9.3f %7.2f %7.4f %7.3f %-20s %6.1f %-18s %7.2f %-19s %8.1f %-16s "
+                  "%8.4f %8.4f %6.1f %8.1f\n",
                   category, row.method.c_str(), row.clips,
                   WithInterval(m.mpjpe_unkeyed_cm, IntervalOf(row, "mpjpe_unkeyed_cm"), 3).c_str(), below.c_str(),
                   m.mpjpe_keyed_between_cm, m.angle_unkeyed_deg, m.npss, m.jitter_ratio,
@@ -108,7 +109,9 @@ void PrintHalfTable(const EvaluationResult& r, const std::string& half) {
                   WithInterval(m.penetration_max_cm, IntervalOf(row, "penetration_max_cm"), 2).c_str(),
                   m.penetration_mean_cm,
                   WithInterval(m.floor_glide_cm_per_s, IntervalOf(row, "floor_glide_cm_per_s"), 1).c_str(),
-                  m.capture_floor_glide_cm_per_s, m.key_error_mean_deg, m.key_error_max_deg,
+                  m.capture_floor_glide_cm_per_s,
+                  WithInterval(m.foot_peak_ratio, IntervalOf(row, "foot_peak_ratio"), 2).c_str(),
+                  m.key_error_mean_deg, m.key_error_max_deg,
                   100.0 * row.poorly_covered_share,
                   1000.0 * row.fill_seconds);
     }

@@ -18,6 +18,9 @@ constexpr double kCmPerM = 100.0;
 constexpr double kContactSpeedCmPerS = 4.2426;
 constexpr double kSkateThresholdCmPerS = 2.0;
 constexpr double kFloorBandM = 0.01;  // a foot joint this near its floor is on the ground
+// The least reference speed of a foot's peak: a walk's feet swing at 2 - 4 m/s, a standing
+// capture's shuffle at a fraction of that, which would make any step of the fill a large ratio.
+constexpr double kPeakFloorCmPerS = 100.0;
 
 struct Posed {
   std::vector<Eigen::Vector3d> positions;       // [f * J + j], metres
@@ -82,6 +85,16 @@ void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled
       ++contacts;
       if (speed > kSkateThresholdCmPerS) ++skating;
     }
+  for (int j : feet) {
+    double fastest_true = 0.0, fastest_filled = 0.0;
+    for (int f = 0; f + 1 < frames; ++f) {
+      fastest_true = std::max(fastest_true, (truth.positions[(f + 1) * nj + j] - truth.positions[f * nj + j]).norm());
+      fastest_filled =
+          std::max(fastest_filled, (filled.positions[(f + 1) * nj + j] - filled.positions[f * nj + j]).norm());
+    }
+    const double reference = std::max(fastest_true * kCmPerM * rate, kPeakFloorCmPerS);
+    m.foot_peak_ratio = std::max(m.foot_peak_ratio, fastest_filled * kCmPerM * rate / reference);
+  }
   m.foot_skate_cm_per_s = contacts ? sum / contacts : 0.0;
   m.foot_skate_share = contacts ? double(skating) / contacts : 0.0;
   m.foot_contact_frames = contacts;
@@ -223,6 +236,7 @@ const std::vector<MetricField>& AveragedMetricFields() {
       {"penetration_mean_cm", &FillMetrics::penetration_mean_cm},
       {"floor_glide_cm_per_s", &FillMetrics::floor_glide_cm_per_s},
       {"capture_floor_glide_cm_per_s", &FillMetrics::capture_floor_glide_cm_per_s},
+      {"foot_peak_ratio", &FillMetrics::foot_peak_ratio},
       {"key_error_mean_deg", &FillMetrics::key_error_mean_deg},
       {"bone_length_error", &FillMetrics::bone_length_error}};
   return fields;

@@ -46,6 +46,12 @@ struct FillMetrics {
   long floor_steps = 0;
   double capture_floor_glide_cm_per_s = 0.0;
   long capture_floor_steps = 0;
+  // The fastest any filled foot joint moves from one frame to the next, over the fastest the
+  // capture's same joint moves, at least 1 m/s (the largest over the foot joints): a foot
+  // snapping from one hold to another, or onto a key, outruns anything the capture does (a
+  // pop); at most 1 when the fill moves its feet no faster than the capture (the floor keeps a
+  // standing capture's shuffles from turning a slow step into a large ratio).
+  double foot_peak_ratio = 0.0;
   // Geodesic angle (deg) between output and sketch at keyed (joint, frame) pairs.
   double key_error_mean_deg = 0.0;
   double key_error_max_deg = 0.0;

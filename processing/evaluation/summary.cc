@@ -19,6 +19,7 @@ void AddWeighted(FillMetrics& sum, const FillMetrics& m, double w) {
   sum.penetration_mean_cm += w * m.penetration_mean_cm;
   sum.floor_glide_cm_per_s += w * m.floor_glide_cm_per_s;
   sum.capture_floor_glide_cm_per_s += w * m.capture_floor_glide_cm_per_s;
+  sum.foot_peak_ratio += w * m.foot_peak_ratio;
   sum.key_error_mean_deg += w * m.key_error_mean_deg;
   sum.key_error_max_deg = std::max(sum.key_error_max_deg, m.key_error_max_deg);  // worst, not mean
   sum.bone_length_error += w * m.bone_length_error;

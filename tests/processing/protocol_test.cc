@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "formats/mfdb/motion_folder.h"
@@ -268,32 +269,65 @@ TEST(FoldPlan, CorpusHalvesAreDisjointCompleteAndFixed) {
   for (Split split : {Split::kNone, Split::kBoth}) ExpectPlanHonest(labels, split);
 }
 
+// The fixture walk with its hips and legs keyed every 8 frames, against which motions on its
+// skeleton are scored.
+struct ScoredWalk {
+  Scene walk = LoadFixtureWalk();
+  Result<MotionClip> sketch = MakeSketch(walk.skeleton, walk.clips.at(0), LegsSpec());
+
+  static SketchSpec LegsSpec() {
+    SketchSpec spec;
+    spec.keep_joints = {"Hips",       "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L",
+                        "UpperLeg_R", "LowerLeg_R", "Foot_R",     "Toes_R"};
+    spec.key_every_frames = 8;
+    return spec;
+  }
+  Result<FillMetrics> Score(const MotionClip& filled) const {
+    return ScoreFill(walk.skeleton, walk.clips[0], *sketch, filled, *walk.skeleton.Find("Hips"));
+  }
+};
+
 // Penetration: a fill equal to the truth never goes below the truth's floor; the same walk
 // lowered by 3 cm has every foot joint 3 cm below its floor at its lowest frame.
 TEST(FillMetrics, PenetrationIsZeroForTheTruthAndTheDepthOfALoweredWalk) {
-  const Scene walk = LoadFixtureWalk();
-  ASSERT_FALSE(walk.clips.empty());
-  const MotionClip& truth = walk.clips[0];
-  SketchSpec spec;
-  spec.keep_joints = {"Hips", "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L", "UpperLeg_R", "LowerLeg_R", "Foot_R", "Toes_R"};
-  spec.key_every_frames = 8;
-  Result<MotionClip> sketch = MakeSketch(walk.skeleton, truth, spec);
-  ASSERT_TRUE(sketch.ok()) << sketch.status().message();
-  const int hips = *walk.skeleton.Find("Hips");
-  Result<FillMetrics> same = ScoreFill(walk.skeleton, truth, *sketch, truth, hips);
+  const ScoredWalk w;
+  ASSERT_TRUE(w.sketch.ok()) << w.sketch.status().message();
+  const MotionClip& truth = w.walk.clips[0];
+  Result<FillMetrics> same = w.Score(truth);
   ASSERT_TRUE(same.ok());
   EXPECT_EQ(same->penetration_max_cm, 0.0);
   EXPECT_EQ(same->penetration_mean_cm, 0.0);
   MotionClip lowered = truth;
   const int root = 0;  // the top joint: its translation is its world position
-  ASSERT_EQ(walk.skeleton.parent(root), kNoParent);
+  ASSERT_EQ(w.walk.skeleton.parent(root), kNoParent);
   for (int f = 0; f < lowered.num_frames; ++f) lowered.translation(f, root).y() -= 0.03;
-  Result<FillMetrics> low = ScoreFill(walk.skeleton, truth, *sketch, lowered, hips);
+  Result<FillMetrics> low = w.Score(lowered);
   ASSERT_TRUE(low.ok());
   EXPECT_NEAR(low->penetration_max_cm, 3.0, 1e-9);
   EXPECT_GT(low->penetration_mean_cm, 0.0);
   EXPECT_LT(low->penetration_mean_cm, 3.0);  // frames with the foot raised go less deep
   EXPECT_NEAR(low->mpjpe_unkeyed_cm, 0.0, 1e-9);  // relative to the hips nothing moved
+}
+
+// Foot peak: a fill equal to the capture moves its feet no faster than the capture does (ratio
+// 1: the walk's feet swing faster than the 1 m/s floor); the same walk shifted 30 cm sideways
+// halfway through has every foot cross 30 cm in one frame (9 m/s), far past the capture's peak.
+TEST(FillMetrics, FootPeakRatioSeesAFootSnappingAcrossTheFloor) {
+  const ScoredWalk w;
+  ASSERT_TRUE(w.sketch.ok()) << w.sketch.status().message();
+  const MotionClip& truth = w.walk.clips[0];
+  Result<FillMetrics> same = w.Score(truth);
+  ASSERT_TRUE(same.ok());
+  EXPECT_NEAR(same->foot_peak_ratio, 1.0, 1e-9);
+  MotionClip shifted = truth;
+  const int root = 0;  // the top joint: its translation is its world position
+  for (int f = truth.num_frames / 2; f < truth.num_frames; ++f) shifted.translation(f, root).x() += 0.3;
+  Result<FillMetrics> jumped = w.Score(shifted);
+  ASSERT_TRUE(jumped.ok());
+  std::printf("foot peak ratio: %.3f as captured, %.3f with a 30 cm jump\n", same->foot_peak_ratio,
+              jumped->foot_peak_ratio);
+  EXPECT_GT(jumped->foot_peak_ratio, 1.5);
+  EXPECT_NEAR(jumped->mpjpe_unkeyed_cm, 0.0, 1e-9);  // relative to the hips nothing moved
 }
 
 }  // namespace
