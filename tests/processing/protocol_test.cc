@@ -13,6 +13,7 @@
 #include "processing/evaluation/bootstrap.h"
 #include "processing/evaluation/fold_plan.h"
 #include "processing/evaluation/metrics.h"
+#include "processing/evaluation/scenarios.h"
 #include "processing/evaluation/sketch_maker.h"
 #include "tests/support/test_paths.h"
 
@@ -273,14 +274,12 @@ TEST(FoldPlan, CorpusHalvesAreDisjointCompleteAndFixed) {
 // skeleton are scored.
 struct ScoredWalk {
   Scene walk = LoadFixtureWalk();
-  Result<MotionClip> sketch = MakeSketch(walk.skeleton, walk.clips.at(0), LegsSpec());
+  Result<MotionClip> sketch = Legs8Sketch(walk);
 
-  static SketchSpec LegsSpec() {
-    SketchSpec spec;
-    spec.keep_joints = {"Hips",       "UpperLeg_L", "LowerLeg_L", "Foot_L", "Toes_L",
-                        "UpperLeg_R", "LowerLeg_R", "Foot_R",     "Toes_R"};
-    spec.key_every_frames = 8;
-    return spec;
+  static Result<MotionClip> Legs8Sketch(const Scene& walk) {
+    if (walk.clips.empty()) return InvalidArgument("the fixture walk has no clip");
+    ASSIGN_OR_RETURN(const SketchScenario legs8, FindSketchScenario("legs8"));
+    return MakeSketch(walk.skeleton, walk.clips[0], legs8.sketch);
   }
   Result<FillMetrics> Score(const MotionClip& filled) const {
     return ScoreFill(walk.skeleton, walk.clips[0], *sketch, filled, *walk.skeleton.Find("Hips"));
