@@ -468,7 +468,7 @@ Status RunFragmentMethod(const MotionDatabase& db, std::unique_ptr<MatchingDatab
       first = false;
       const int blend = hanging[group.joints.back()] ? std::min(options.blend, options.leg_blend) : options.blend;
       // A group's candidates are matched on its few most correlated drivers, but what varies
-      // among them is regressed on every keyed channel: 128 candidates support the wider fit,
+      // among them is regressed on every keyed channel: 160 candidates support the wider fit,
       // the 32 of a leg chain do not (docs/fill.md, step 6).
       // The legs' steps follow the sketch's own progression, not a consensus of the takes'.
       const Eigen::MatrixXf* positions = nullptr;

@@ -70,8 +70,11 @@ struct FragmentFillOptions {
   // there the blend holds its own jolts, not captured detail of this motion.
   int synthesized_finest_band = 1;
   bool repin_keys = true;   // restore the exact keys after texturing (displacement map)
-  int candidates = 128;     // K best candidates kept per fragment
-  int blend = 128;          // candidates averaged per fragment (1 = the joined one alone)
+  // K best candidates kept per fragment, and how many of them are averaged (1 = the joined one
+  // alone). More averaged candidates smooth locomotion's upper body towards what the takes
+  // agree on, fewer keep a gesture's own posture: 160 is where both gain (docs/fill.md).
+  int candidates = 160;
+  int blend = 160;
   int leg_blend = 32;       // hierarchical: at most this many for chains hanging below the root (legs)
   // > 0: the blend is a local linear regression over the candidates (local_regression.h) with
   // this ridge, relative to the candidates' spread; 0: their plain weighted average.

@@ -252,7 +252,7 @@ TEST(EvalCli, TablePrintsBothHalvesAndBadSplitIsAUsageError) {
 
 // eval --against: every run clip of the default database tested against the whole default
 // database, which holds it: covered everywhere, and the fill well below the mean pose (about
-// 5.5 against 8.2 cm: 128 candidates are averaged, so even the clip itself is not copied).
+// 5.5 against 8.2 cm: 160 candidates are averaged, so even the clip itself is not copied).
 TEST(EvalCli, AgainstAFixedDatabaseReportsCoverage) {
   const std::string db = testing::FixturePath("default_db");
   const RunResult run =
