@@ -145,6 +145,31 @@ std::vector<bool> StillBetweenKeys(const std::vector<Vector3d>& track, const std
   return still;
 }
 
+// FootPlantOptions::end_holds_at_still_keys. The keys' still span begins and ends on a key,
+// where the hold's correction is zero; past it the keys have the foot move to the next key.
+// The contact's frames beyond the span are let go unless they end (begin) at least two frames
+// short of that key: one frame at least to fade the correction out before the key.
+void EndHoldsAtTheirStillKeys(const std::vector<bool>& pinned, const std::vector<bool>& keys_still,
+                              std::vector<bool>& down) {
+  const int n = static_cast<int>(down.size());
+  for (const auto& [first, last] : ContactRuns(down)) {
+    int still_first = -1, still_last = -1;
+    for (int f = first; f <= last; ++f)
+      if (keys_still[f]) {
+        if (still_first < 0) still_first = f;
+        still_last = f;
+      }
+    if (still_first < 0) continue;
+    int next = still_last + 1, previous = still_first - 1;
+    while (next < n && !pinned[next]) ++next;
+    while (previous >= 0 && !pinned[previous]) --previous;
+    if (last > still_last && next < n && last >= next - 1)
+      std::fill(down.begin() + still_last + 1, down.begin() + last + 1, false);
+    if (first < still_first && previous >= 0 && first <= previous + 1)
+      std::fill(down.begin() + first, down.begin() + still_first, false);
+  }
+}
+
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
                            const std::vector<bool>& pinned, const std::vector<bool>& given,
                            const FootPlantOptions& options, const std::string& side, const std::string& part,
@@ -176,6 +201,7 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
     out.key_stance = StancesAroundKeys(track, hips, times, pinned, standing, floor, stance);
   }
   for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || out.keys_still[f] || out.key_stance[f];
+  if (keyed && options.end_holds_at_still_keys) EndHoldsAtTheirStillKeys(pinned, out.keys_still, out.down);
   for (const auto& [first, last] : ContactRuns(out.down)) {
     const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
     double farthest = 0.0;

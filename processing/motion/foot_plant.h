@@ -80,6 +80,12 @@ struct FootPlantOptions {
   // keys sparser than a step let the texture's take step there (keys every 16 frames: a
   // standing wave's feet lifted 8 cm and slid at 54 cm/s between keys that had them still).
   double key_still_m_per_s = 0.05;
+  // A hold the keys have still, which the fill's contacts or the takes' vote carry on towards
+  // the leg's next key (back towards its previous one), ends at its last (first) still key
+  // unless it lets go at least two frames before that key: there the keys have the foot
+  // elsewhere, and a hold run on to the key snapped from 1 - 3 cm to nothing at it (with keys
+  // every 4 frames most of the legs' jitter), one run past it dragged the foot behind the keys.
+  bool end_holds_at_still_keys = true;
   // A keyed foot on the ground at a key, where the fill's contacts or the takes' vote have it
   // standing, with the hips travelling faster than `key_stance_min_travel_m_per_s`, stands at
   // the key while the hips pass over it: from when they were `key_stance_ahead_share` of its

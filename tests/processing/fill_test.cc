@@ -561,7 +561,7 @@ TEST(Fill, TimidGesturesTakeDetailAsLivelyAsTheirKeys) {
 }
 
 // With the legs synthesised (the upper-body scenario: hips, torso, head and arms keyed every 8
-// frames) the leg chains blend at most leg_blend candidates while other groups blend all 128:
+// frames) the leg chains blend at most leg_blend candidates while other groups blend all 160:
 // many takes' strides of slightly different phase average into a blurred step. Over the
 // locomotion of a style the database lacks, the legs come nearer the capture.
 TEST(Fill, SynthesisedLegsBlendFewerCandidates) {
