@@ -170,6 +170,88 @@ void EndHoldsAtTheirStillKeys(const std::vector<bool>& pinned, const std::vector
   }
 }
 
+bool Marked(const std::vector<bool>& flags, int first, int last) {
+  return std::find(flags.begin() + first, flags.begin() + last + 1, true) != flags.begin() + last + 1;
+}
+
+// One contact to be held: its frames and where the joint is held at each.
+struct Hold {
+  int first = 0, last = -1;
+  std::vector<Vector3d> anchors;  // [f - first]
+  bool keys_still = false;        // the keys have the foot still in it: its height is held too
+};
+
+// How far the hold moves the joint at frame f (along the ground unless the keys hold its height).
+Vector3d CorrectionAt(const Hold& hold, const std::vector<Vector3d>& track, int f) {
+  Vector3d d = hold.anchors[f - hold.first] - track[f];
+  if (!hold.keys_still) d.y() = 0.0;
+  return d;
+}
+
+// A hold without keys inside is anchored at its mean: after its frames change, so does that.
+void Reanchor(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<bool>& pinned,
+              Hold& hold) {
+  hold.anchors = AnchorsOf(clip, track, pinned, hold.first, hold.last);
+}
+
+// FootPlantOptions::keyed_edge_m_per_s. At a hold's edge the correction fades out towards the
+// leg's key beyond it and is nothing at the key: a hold starting a frame or two after a key, far
+// from where the key has the foot, threw the foot there in those frames. Each edge moves inwards until
+// its correction fades out no faster than `per_s` on the way to the key; frames the keys pin
+// inside the hold stop it (their correction is nothing). False: nothing is left of the hold.
+bool MoveEdgesWhereTheKeysReach(const MotionClip& clip, const std::vector<double>& times,
+                                const std::vector<Vector3d>& track, const std::vector<bool>& pinned, double per_s,
+                                Hold& hold) {
+  const int n = static_cast<int>(track.size());
+  const auto reachable = [&](int f, int key) {
+    return CorrectionAt(hold, track, f).norm() <= per_s * std::abs(times[f] - times[key]);
+  };
+  int previous = hold.first - 1, next = hold.last + 1;
+  while (previous >= 0 && !pinned[previous]) --previous;
+  while (next < n && !pinned[next]) ++next;
+  int from = hold.first, to = hold.last;
+  if (previous >= 0)
+    while (from <= to && !pinned[from] && !reachable(from, previous)) ++from;
+  if (next < n)
+    while (to >= from && !pinned[to] && !reachable(to, next)) --to;
+  if (from > to) return false;
+  if (from != hold.first || to != hold.last) {
+    hold.first = from, hold.last = to;
+    Reanchor(clip, track, pinned, hold);
+  }
+  return true;
+}
+
+// Two holds of the joint with no key between them: the correction changes from the first's
+// last frame to the second's first no faster than `per_s` (as towards a key). Where it would
+// not, the edge with the larger correction moves inwards a frame at a time: a heel held up to
+// the frame before the toe's next hold began elsewhere (keyed stances two steps apart) threw
+// the foot across in one frame.
+void SpaceHoldsApart(const MotionClip& clip, const std::vector<double>& times, const std::vector<Vector3d>& track,
+                     const std::vector<bool>& pinned, double per_s, std::vector<Hold>& holds) {
+  for (size_t i = 0; i + 1 < holds.size(); ++i) {
+    Hold& a = holds[i];
+    Hold& b = holds[i + 1];
+    if (b.first - a.last >= 2 && Marked(pinned, a.last + 1, b.first - 1)) continue;  // the key rule holds there
+    while (a.first <= a.last && b.first <= b.last) {
+      const Vector3d ca = CorrectionAt(a, track, a.last), cb = CorrectionAt(b, track, b.first);
+      if ((cb - ca).norm() <= per_s * (times[b.first] - times[a.last])) break;
+      const bool move_a = ca.norm() >= cb.norm();
+      if (pinned[move_a ? a.last : b.first]) break;
+      if (move_a) {
+        --a.last;
+        a.anchors.pop_back();
+      } else {
+        ++b.first;
+        b.anchors.erase(b.anchors.begin());
+      }
+    }
+    if (a.first <= a.last) Reanchor(clip, track, pinned, a);
+    if (b.first <= b.last) Reanchor(clip, track, pinned, b);
+  }
+  holds.erase(std::remove_if(holds.begin(), holds.end(), [](const Hold& h) { return h.first > h.last; }), holds.end());
+}
+
 JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& track, const std::vector<Vector3d>& hips,
                            const std::vector<bool>& pinned, const std::vector<bool>& given,
                            const FootPlantOptions& options, const std::string& side, const std::string& part,
@@ -202,36 +284,44 @@ JointContacts FindContacts(const MotionClip& clip, const std::vector<Vector3d>& 
   }
   for (size_t f = 0; f < out.down.size(); ++f) out.down[f] = out.down[f] || out.keys_still[f] || out.key_stance[f];
   if (keyed && options.end_holds_at_still_keys) EndHoldsAtTheirStillKeys(pinned, out.keys_still, out.down);
-  for (const auto& [first, last] : ContactRuns(out.down)) {
-    const std::vector<Vector3d> anchors = AnchorsOf(clip, track, pinned, first, last);
+  std::vector<Hold> holds;
+  for (const auto& run : ContactRuns(out.down)) {
+    Hold hold{run.first, run.second, AnchorsOf(clip, track, pinned, run.first, run.second),
+              Marked(out.keys_still, run.first, run.second)};
+    if (keyed && options.keyed_edge_m_per_s > 0.0 &&
+        !MoveEdgesWhereTheKeysReach(clip, times, track, pinned, options.keyed_edge_m_per_s, hold))
+      continue;
     double farthest = 0.0;
-    for (int f = first; f <= last; ++f) {
-      const Vector3d d = anchors[f - first] - track[f];
+    for (int f = hold.first; f <= hold.last; ++f) {
+      const Vector3d d = hold.anchors[f - hold.first] - track[f];
       farthest = std::max(farthest, std::hypot(d.x(), d.z()));
     }
-    const auto marked = [first = first, last = last](const std::vector<bool>& flags) {
-      return std::find(flags.begin() + first, flags.begin() + last + 1, true) != flags.begin() + last + 1;
-    };
     // A foot this far from where it would be held is not standing (a swing foot passing low
     // and slow near a key): holding it would drag the leg and pop where the hold ends. Where
     // the keys have it still, the fill strayed and the keys hold.
-    const bool keys_still = marked(out.keys_still);
-    const double limit = keys_still            ? INFINITY
+    const double limit = hold.keys_still         ? INFINITY
                          : is_given && keyed ? options.max_keyed_given_correction_m
                          : is_given          ? options.max_given_correction_m
                          : part == "toe"     ? options.max_toe_correction_m
                                              : options.max_correction_m;
     if (farthest > limit) {
-      std::fill(out.down.begin() + first, out.down.begin() + last + 1, false);
       ++report.contacts_skipped;
       continue;
     }
-    std::copy(anchors.begin(), anchors.end(), out.anchor.begin() + first);
+    holds.push_back(std::move(hold));
+  }
+  if (keyed && options.keyed_hold_change_m_per_s > 0.0)
+    SpaceHoldsApart(clip, times, track, pinned, options.keyed_hold_change_m_per_s, holds);
+  std::fill(out.down.begin(), out.down.end(), false);
+  for (const Hold& hold : holds) {
+    const int first = hold.first, last = hold.last;
+    std::fill(out.down.begin() + first, out.down.begin() + last + 1, true);
+    std::copy(hold.anchors.begin(), hold.anchors.end(), out.anchor.begin() + first);
     FootContact c{side, part, times[first], times[last], 0, 0.0,
-                  keys_still             ? "keys"
-                  : marked(out.key_stance) ? "stance"
-                  : marked(voted)          ? "takes"
-                                           : "fill"};
+                  hold.keys_still                        ? "keys"
+                  : Marked(out.key_stance, first, last) ? "stance"
+                  : Marked(voted, first, last)          ? "takes"
+                                                        : "fill"};
     for (int f = first; f <= last; ++f) c.keys += pinned[f] ? 1 : 0;
     report.contacts.push_back(c);
   }
@@ -314,6 +404,33 @@ struct Release {
   }
 };
 
+// Two contacts nearer each other than their fades reach: fading out from one and in to the
+// other, the correction jumped from the one's to the other's where the two fades crossed.
+// The correction goes straight from one edge's to the other's across the gap instead (no key
+// lies in it: a fade never passes one).
+void BridgeOverlappingFades(const std::vector<Correction>& held, const std::vector<bool>& pinned,
+                            const Release& release, std::vector<Correction>& out) {
+  const int n = static_cast<int>(held.size());
+  int previous = -1;  // the last held frame, -1 after a key or at the start
+  for (int f = 0; f < n; ++f) {
+    if (pinned[f] && !held[f].any) {
+      previous = -1;
+      continue;
+    }
+    if (!held[f].any) continue;
+    if (previous >= 0 && f - previous > 1 &&
+        f - previous <= release.FramesFor(held[previous]) + release.FramesFor(held[f])) {
+      for (int g = previous + 1; g < f; ++g) {
+        const double s = Smoothstep(double(g - previous) / (f - previous));
+        out[g].move = (1.0 - s) * held[previous].move + s * held[f].move;
+        out[g].turn = held[previous].turn.slerp(s, held[f].turn);
+        out[g].any = true;
+      }
+    }
+    previous = f;
+  }
+}
+
 // Beyond a contact the correction of its edge frame fades out over the release's frames
 // (smoothstep), or sooner where a key of the leg comes first: the fade then reaches zero at the
 // key (the key's pose is the animator's) rather than being cut off there.
@@ -342,6 +459,7 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
         break;
       }
   }
+  BridgeOverlappingFades(held, pinned, release, out);
   return out;
 }
 

@@ -11,7 +11,8 @@
 //   the toe meets its own anchor; with the toe alone down (heel off), the ankle follows the
 //   held toe along the foot as the fill turns it;
 // - the correction fades out over a few frames beyond a contact, never past a key, so nothing
-//   pops where a contact starts or ends; a correction straightening the leg is softened near
+//   pops where a contact starts or ends (two contacts nearer than their fades reach: it goes
+//   straight from one's to the other's); a correction straightening the leg is softened near
 //   full length, so the knee does not snap;
 // - at every frame the foot is lifted back above the floor the keys stand on (a leg without
 //   keys but with given contacts: the median height of its contacts), if it sank.
@@ -86,6 +87,14 @@ struct FootPlantOptions {
   // elsewhere, and a hold run on to the key snapped from 1 - 3 cm to nothing at it (with keys
   // every 4 frames most of the legs' jitter), one run past it dragged the foot behind the keys.
   bool end_holds_at_still_keys = true;
+  // On a keyed leg a hold's correction fades out no faster than this on the way to the key
+  // beyond its edge (where it is nothing), and changes no faster than
+  // `keyed_hold_change_m_per_s` from one hold of the joint to its next where no key lies
+  // between them: the holds' edge frames are let go until it does. A hold the takes' vote or a
+  // key's stance starts a frame or two after a key (or after another hold), far from where the
+  // key has the foot, threw the foot across in those frames (keys every 16 frames). 0: off.
+  double keyed_edge_m_per_s = 2.0;
+  double keyed_hold_change_m_per_s = 1.0;
   // A keyed foot on the ground at a key, where the fill's contacts or the takes' vote have it
   // standing, with the hips travelling faster than `key_stance_min_travel_m_per_s`, stands at
   // the key while the hips pass over it: from when they were `key_stance_ahead_share` of its

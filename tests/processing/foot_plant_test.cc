@@ -703,6 +703,36 @@ TEST(FootPlant, HoldsEndAtTheirStillKeysWhereTheKeysMoveTheFootOn) {
   EXPECT_LT(now.foot_skate_cm_per_s, 5.0);                                   // 1.44 (1.20 holding on) cm/s
 }
 
+// The old style's walk backwards, legs keyed every 16 frames, against the other styles: the
+// takes' vote and the keys' stances started holds a frame or two after a key (or after the
+// joint's previous hold), tens of centimetres from where the key has the foot, and the foot
+// crossed that in those frames (its fastest frame 7.2 times the capture's). A hold now starts
+// (ends) no nearer its key than its correction can fade in at 2 m/s, nor nearer the joint's
+// previous (next) hold than it can change in at 1 m/s: the fastest frame is 2.4 times the
+// capture's, the jitter ratio 3.93 -> 2.71, and the feet slide no more during the capture's
+// contacts (16.42 -> 15.69 cm/s).
+TEST(FootPlant, KeyedHoldsStartNoNearerTheirKeyThanTheFootCanReach) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  Result<HeldOutSketch> take = MakeHeldOutSketch("dataset-1_walk-back_old_001", "legs16", "old");
+  ASSERT_TRUE(take.ok()) << take.status().message();
+  SketchFillOptions anywhere;
+  anywhere.feet.keyed_edge_m_per_s = 0.0;
+  anywhere.feet.keyed_hold_change_m_per_s = 0.0;
+  const Result<ScoredFill> before = FillAndScore(*take, anywhere);
+  const Result<ScoredFill> now = FillAndScore(*take, SketchFillOptions{});
+  ASSERT_TRUE(before.ok()) << before.status().message();
+  ASSERT_TRUE(now.ok()) << now.status().message();
+  EXPECT_LT(now->key_error_max_deg, kPlantedKeysToleranceDeg);
+  std::printf("old walk backwards, legs keyed every 16 frames: fastest foot frame %.2f / %.2f times the capture's, "
+              "jitter ratio %.3f / %.3f, skating %.2f / %.2f cm/s (holds anywhere / reachable from their keys)\n",
+              before->metrics.foot_peak_ratio, now->metrics.foot_peak_ratio, before->metrics.jitter_ratio,
+              now->metrics.jitter_ratio, before->metrics.foot_skate_cm_per_s, now->metrics.foot_skate_cm_per_s);
+  EXPECT_LT(now->metrics.foot_peak_ratio, 3.0);
+  EXPECT_LT(now->metrics.foot_peak_ratio, 0.8 * before->metrics.foot_peak_ratio);
+  EXPECT_LT(now->metrics.jitter_ratio, before->metrics.jitter_ratio);
+  EXPECT_LT(now->metrics.foot_skate_cm_per_s, before->metrics.foot_skate_cm_per_s + 0.5);
+}
+
 // A captured standing pose held for 33 frames with the legs keyed at frames 0, 16 and 32,
 // and between the keys the left leg lifted and swung as a stepping texture would have it (up
 // to 30 degrees at the hip, 50 at the knee): the keys have the foot still on the ground, so it
