@@ -463,6 +463,33 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
   return out;
 }
 
+// Where the foot passes from one contact to another from one frame to the next (a heel or a
+// toe contact starts or ends) and the correction changes by more than `per_frame`: the frames on
+// the side with the larger correction are let go until the change is no faster than that across
+// the gap (a toe held where the previous key stood it and a heel held where the next key does,
+// overlapping, threw the foot 25 cm in a frame where the heel's hold began).
+void LetGoWhereHoldsJump(const JointContacts& heel, const JointContacts* toe, double per_frame,
+                         std::vector<Correction>& held) {
+  const int n = static_cast<int>(held.size());
+  const auto changes = [&](int f) {
+    return heel.down[f] != heel.down[f - 1] || (toe && toe->down[f] != toe->down[f - 1]);
+  };
+  for (int f = 1; f < n; ++f) {
+    if (!held[f - 1].any || !held[f].any || !changes(f)) continue;
+    int a = f - 1, b = f;
+    while ((held[b].move - held[a].move).norm() > per_frame * (b - a)) {
+      if (held[a].move.norm() >= held[b].move.norm()) {
+        held[a--] = Correction{};
+        if (a < 0 || !held[a].any) break;
+      } else {
+        held[b++] = Correction{};
+        if (b >= n || !held[b].any) break;
+      }
+    }
+    f = std::max(f, b);
+  }
+}
+
 // The floor of a joint given its contacts: the median height over them, or its lowest height
 // if the vote never has it stand (a short dash), moved by `shift` onto the ground; never below
 // `lowest`, where it would lift nothing.
@@ -602,6 +629,8 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
         held[f] = HoldAt(f, tracks, heel, leg.toe >= 0 ? &toe : nullptr, f > 0 ? held[f - 1] : Correction{},
                          Smoothstep(double(heel_off) / (turn_span + 1)));
     }
+    if (options.hold_jump_m_per_s > 0.0)
+      LetGoWhereHoldsJump(heel, leg.toe >= 0 ? &toe : nullptr, options.hold_jump_m_per_s * frame_s, held);
     // A keyed leg lets a large correction go no faster than keyed_release_m_per_s (its fades
     // end at keys, so they stay short where keys are dense).
     Release release{fade, fade, INFINITY};

@@ -95,6 +95,10 @@ struct FootPlantOptions {
   // key has the foot, threw the foot across in those frames (keys every 16 frames). 0: off.
   double keyed_edge_m_per_s = 2.0;
   double keyed_hold_change_m_per_s = 1.0;
+  // Where the foot passes from one contact straight into another (a heel's or a toe's starts or
+  // ends on the next frame) and the correction changes faster than this, frames on the side with
+  // the larger correction are let go until it does not (0: off).
+  double hold_jump_m_per_s = 2.0;
   // A keyed foot on the ground at a key, where the fill's contacts or the takes' vote have it
   // standing, with the hips travelling faster than `key_stance_min_travel_m_per_s`, stands at
   // the key while the hips pass over it: from when they were `key_stance_ahead_share` of its
