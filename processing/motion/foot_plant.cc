@@ -467,27 +467,53 @@ std::vector<Correction> FadeOut(const std::vector<Correction>& held, const std::
 // toe contact starts or ends) and the correction changes by more than `per_frame`: the frames on
 // the side with the larger correction are let go until the change is no faster than that across
 // the gap (a toe held where the previous key stood it and a heel held where the next key does,
-// overlapping, threw the foot 25 cm in a frame where the heel's hold began).
-void LetGoWhereHoldsJump(const JointContacts& heel, const JointContacts* toe, double per_frame,
-                         std::vector<Correction>& held) {
+// overlapping, threw the foot 25 cm in a frame where the heel's hold began). The frames let go
+// are no longer down, for the report.
+void LetGoWhereHoldsJump(double per_frame, JointContacts& heel, JointContacts* toe, std::vector<Correction>& held) {
   const int n = static_cast<int>(held.size());
   const auto changes = [&](int f) {
     return heel.down[f] != heel.down[f - 1] || (toe && toe->down[f] != toe->down[f - 1]);
+  };
+  const auto let_go = [&](int f) {
+    held[f] = Correction{};
+    heel.down[f] = false;
+    if (toe) toe->down[f] = false;
   };
   for (int f = 1; f < n; ++f) {
     if (!held[f - 1].any || !held[f].any || !changes(f)) continue;
     int a = f - 1, b = f;
     while ((held[b].move - held[a].move).norm() > per_frame * (b - a)) {
       if (held[a].move.norm() >= held[b].move.norm()) {
-        held[a--] = Correction{};
+        let_go(a--);
         if (a < 0 || !held[a].any) break;
       } else {
-        held[b++] = Correction{};
+        let_go(b++);
         if (b >= n || !held[b].any) break;
       }
     }
     f = std::max(f, b);
   }
+}
+
+// A leg's contacts as reported: each narrowed to the frames its joint is still down (holds let
+// go where they jumped no longer count), or dropped if none is; with its largest correction.
+void ReportHeldContacts(const MotionClip& clip, const JointContacts& heel, const JointContacts& toe,
+                        const std::vector<double>& correction_m, size_t first_contact,
+                        std::vector<FootContact>& contacts) {
+  size_t kept = first_contact;
+  for (size_t i = first_contact; i < contacts.size(); ++i) {
+    FootContact contact = contacts[i];
+    const std::vector<bool>& down = contact.part == "toe" ? toe.down : heel.down;
+    int first = NearestFrame(clip, contact.start_s), last = NearestFrame(clip, contact.end_s);
+    while (first <= last && !down[first]) ++first;
+    while (last >= first && !down[last]) --last;
+    if (first > last) continue;
+    contact.start_s = clip.time_s(first);
+    contact.end_s = clip.time_s(last);
+    for (int f = first; f <= last; ++f) contact.max_correction_m = std::max(contact.max_correction_m, correction_m[f]);
+    contacts[kept++] = contact;
+  }
+  contacts.resize(kept);
 }
 
 // The floor of a joint given its contacts: the median height over them, or its lowest height
@@ -612,7 +638,7 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
     const LegTracks tracks = TrackLeg(skeleton, clip, leg);
     const std::vector<bool> pinned = PinnedFrames(clip, leg);
     const size_t first_contact = report.contacts.size();
-    const JointContacts heel =
+    JointContacts heel =
         FindContacts(clip, tracks.ankle, tracks.hips, pinned, leg.heel_down, options, leg.side, "heel", report);
     JointContacts toe;
     if (leg.toe >= 0) {
@@ -630,7 +656,7 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
                          Smoothstep(double(heel_off) / (turn_span + 1)));
     }
     if (options.hold_jump_m_per_s > 0.0)
-      LetGoWhereHoldsJump(heel, leg.toe >= 0 ? &toe : nullptr, options.hold_jump_m_per_s * frame_s, held);
+      LetGoWhereHoldsJump(options.hold_jump_m_per_s * frame_s, heel, leg.toe >= 0 ? &toe : nullptr, held);
     // A keyed leg lets a large correction go no faster than keyed_release_m_per_s (its fades
     // end at keys, so they stay short where keys are dense).
     Release release{fade, fade, INFINITY};
@@ -660,11 +686,7 @@ FootPlantReport PlantFeet(const Skeleton& skeleton, const std::vector<LegForPlan
       report.max_correction_m = std::max(report.max_correction_m, planted.correction_m[f]);
       ++report.frames_held;
     }
-    for (size_t i = first_contact; i < report.contacts.size(); ++i) {
-      FootContact& contact = report.contacts[i];
-      for (int f = NearestFrame(clip, contact.start_s); f <= NearestFrame(clip, contact.end_s); ++f)
-        contact.max_correction_m = std::max(contact.max_correction_m, planted.correction_m[f]);
-    }
+    ReportHeldContacts(clip, heel, toe, planted.correction_m, first_contact, report.contacts);
     report.legs.push_back(std::move(planted));
   }
   return report;
