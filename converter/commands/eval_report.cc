@@ -18,6 +18,7 @@ Json EvalMetricsJson(const FillMetrics& m) {
           {"jitter_ratio", m.jitter_ratio},
           {"foot_skate_cm_per_s", m.foot_skate_cm_per_s},
           {"foot_skate_share", m.foot_skate_share},
+          {"foot_slide_cm_per_s", m.foot_slide_cm_per_s},
           {"foot_contact_frames", m.foot_contact_frames},
           {"penetration_max_cm", m.penetration_max_cm},
           {"penetration_mean_cm", m.penetration_mean_cm},
@@ -89,23 +90,25 @@ void PrintProtocolHeader(const EvaluationResult& r, const EvalReportContext& c) 
 }
 
 void PrintHalfTable(const EvaluationResult& r, const std::string& half) {
-  std::printf("%-11s %-13s %5s %-22s %-22s %9s %7s %7s %7s %-20s %6s %-18s %7s %-19s %8s %-16s %8s %8s %6s %8s\n",
+  std::printf("%-11s %-13s %5s %-22s %-22s %9s %7s %7s %7s %-20s %6s %-18s %-18s %7s %-19s %8s %-16s %8s %8s %6s "
+              "%8s\n",
               "category", "method", "clips", "unkeyed cm", "below mean %", "keyed-btw", "angle", "NPSS", "jitter",
-              "skate cm/s", "skate%", "pen-max cm", "pen-avg", "glide cm/s", "capture", "foot peak", "key-mean",
-              "key-max", "poor%", "ms/fill");
+              "skate cm/s", "skate%", "slide cm/s", "pen-max cm", "pen-avg", "glide cm/s", "capture", "foot peak",
+              "key-mean", "key-max", "poor%", "ms/fill");
   for (const char* category : {"locomotion", "gestures", "all"})
     for (const SummaryRow& row : r.summary) {
       if (row.half != half || row.category != category) continue;
       const FillMetrics& m = row.mean;
       const std::string below =
           row.has_below_mean ? WithInterval(row.below_mean.percent, row.below_mean.interval, 1) : "-";
-      std::printf("%-11s %-13s %5d %-22s %-22s %9.3f %7.2f %7.4f %7.3f %-20s %6.1f %-18s %7.2f %-19s %8.1f %-16s "
-                  "%8.4f %8.4f %6.1f %8.1f\n",
+      std::printf("%-11s %-13s %5d %-22s %-22s %9.3f %7.2f %7.4f %7.3f %-20s %6.1f %-18s %-18s %7.2f %-19s %8.1f "
+                  "%-16s %8.4f %8.4f %6.1f %8.1f\n",
                   category, row.method.c_str(), row.clips,
                   WithInterval(m.mpjpe_unkeyed_cm, IntervalOf(row, "mpjpe_unkeyed_cm"), 3).c_str(), below.c_str(),
                   m.mpjpe_keyed_between_cm, m.angle_unkeyed_deg, m.npss, m.jitter_ratio,
                   WithInterval(m.foot_skate_cm_per_s, IntervalOf(row, "foot_skate_cm_per_s"), 2).c_str(),
                   100.0 * m.foot_skate_share,
+                  WithInterval(m.foot_slide_cm_per_s, IntervalOf(row, "foot_slide_cm_per_s"), 2).c_str(),
                   WithInterval(m.penetration_max_cm, IntervalOf(row, "penetration_max_cm"), 2).c_str(),
                   m.penetration_mean_cm,
                   WithInterval(m.floor_glide_cm_per_s, IntervalOf(row, "floor_glide_cm_per_s"), 1).c_str(),

@@ -17,6 +17,9 @@ constexpr double kCmPerM = 100.0;
 // LaFAN1 contact rule: squared per-frame displacement below 0.02 cm^2 at 30 fps (about 4.2 cm/s).
 constexpr double kContactSpeedCmPerS = 4.2426;
 constexpr double kSkateThresholdCmPerS = 2.0;
+// The fastest a captured foot moves while standing (the database's contact detection, which
+// lets heels and toes roll): a filled foot slower than this on a contact frame is sliding.
+constexpr double kSlideLimitCmPerS = 30.0;
 constexpr double kFloorBandM = 0.01;  // a foot joint this near its floor is on the ground
 // The least reference speed of a foot's peak: a walk's feet swing at 2 - 4 m/s, a standing
 // capture's shuffle at a fraction of that, which would make any step of the fill a large ratio.
@@ -71,7 +74,7 @@ double MeanJerk(const Posed& posed, const std::vector<int>& joints, int frames, 
 
 void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled, const std::vector<int>& feet,
                int frames, double rate, FillMetrics& m) {
-  double sum = 0.0;
+  double sum = 0.0, sliding = 0.0;
   long contacts = 0, skating = 0;
   const int nj = skeleton.num_joints();
   for (int f = 0; f + 1 < frames; ++f)
@@ -82,6 +85,7 @@ void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled
       step.y() = 0.0;
       const double speed = step.norm() * kCmPerM * rate;
       sum += speed;
+      if (speed < kSlideLimitCmPerS) sliding += speed;
       ++contacts;
       if (speed > kSkateThresholdCmPerS) ++skating;
     }
@@ -97,6 +101,7 @@ void ScoreFeet(const Skeleton& skeleton, const Posed& truth, const Posed& filled
   }
   m.foot_skate_cm_per_s = contacts ? sum / contacts : 0.0;
   m.foot_skate_share = contacts ? double(skating) / contacts : 0.0;
+  m.foot_slide_cm_per_s = contacts ? sliding / contacts : 0.0;
   m.foot_contact_frames = contacts;
 }
 
@@ -232,6 +237,7 @@ const std::vector<MetricField>& AveragedMetricFields() {
       {"jitter_ratio", &FillMetrics::jitter_ratio},
       {"foot_skate_cm_per_s", &FillMetrics::foot_skate_cm_per_s},
       {"foot_skate_share", &FillMetrics::foot_skate_share},
+      {"foot_slide_cm_per_s", &FillMetrics::foot_slide_cm_per_s},
       {"penetration_max_cm", &FillMetrics::penetration_max_cm},
       {"penetration_mean_cm", &FillMetrics::penetration_mean_cm},
       {"floor_glide_cm_per_s", &FillMetrics::floor_glide_cm_per_s},

@@ -30,6 +30,12 @@ struct FillMetrics {
   // much as one with hundreds), so foot_contact_frames is kept.
   double foot_skate_cm_per_s = 0.0;
   double foot_skate_share = 0.0;
+  // The part of foot_skate_cm_per_s from the contact frames where the filled foot moves slower
+  // than a captured foot may while standing (30 cm/s): a planted foot sliding. The rest is a
+  // filled foot still stepping (swinging, landing, lifting) where the capture's stands, a step
+  // out of time with the capture's, which keys sparser than a step or synthesised legs leave
+  // open. Pooled like foot_skate_cm_per_s.
+  double foot_slide_cm_per_s = 0.0;
   long foot_contact_frames = 0;
   // Ground penetration (cm) of the filled foot joints: the floor of a kind of joint (ankles,
   // toes) is the truth's lowest height of either side's joint over the clip (the capture's own

@@ -15,6 +15,7 @@ void AddWeighted(FillMetrics& sum, const FillMetrics& m, double w) {
   sum.jitter_ratio += w * m.jitter_ratio;
   sum.foot_skate_cm_per_s += w * m.foot_skate_cm_per_s;
   sum.foot_skate_share += w * m.foot_skate_share;
+  sum.foot_slide_cm_per_s += w * m.foot_slide_cm_per_s;
   sum.penetration_max_cm += w * m.penetration_max_cm;
   sum.penetration_mean_cm += w * m.penetration_mean_cm;
   sum.floor_glide_cm_per_s += w * m.floor_glide_cm_per_s;
@@ -31,7 +32,8 @@ void AddWeighted(FillMetrics& sum, const FillMetrics& m, double w) {
 // per-clip average let single frames of runs dominate it). The count a field is pooled over,
 // or null for a plain mean over clips.
 long FillMetrics::*PoolingCount(double FillMetrics::*field) {
-  if (field == &FillMetrics::foot_skate_cm_per_s || field == &FillMetrics::foot_skate_share)
+  if (field == &FillMetrics::foot_skate_cm_per_s || field == &FillMetrics::foot_skate_share ||
+      field == &FillMetrics::foot_slide_cm_per_s)
     return &FillMetrics::foot_contact_frames;
   if (field == &FillMetrics::floor_glide_cm_per_s) return &FillMetrics::floor_steps;
   if (field == &FillMetrics::capture_floor_glide_cm_per_s) return &FillMetrics::capture_floor_steps;

@@ -191,6 +191,8 @@ TEST(EvalCli, SplitHalvesCarryIntervalsFoldCellsAndPenetration) {
     EXPECT_GE(row["metrics"]["penetration_max_cm"].get<double>(), 0.0);
     EXPECT_TRUE(row["intervals"].contains("penetration_mean_cm"));
     EXPECT_TRUE(row["intervals"].contains("foot_skate_cm_per_s"));
+    EXPECT_LE(row["metrics"]["foot_slide_cm_per_s"].get<double>(),
+              row["metrics"]["foot_skate_cm_per_s"].get<double>() + 1e-9);  // a part of it
     EXPECT_TRUE(row["intervals"].contains("floor_glide_cm_per_s"));
     EXPECT_GT(row["metrics"]["capture_floor_steps"].get<long>(), 0);  // the runs' feet touch the floor
     if (row["method"] == "mean") {

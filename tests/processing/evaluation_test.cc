@@ -1,6 +1,7 @@
 // Sketch making and fill metrics on a real Bandai-Namco walk (shared corpus).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -200,6 +201,39 @@ TEST(FillMetrics, FloorGlideMeasuresFeetDraggedAlongTheGround) {
   EXPECT_GT(self->capture_floor_glide_cm_per_s, 1.0);
   EXPECT_LT(self->capture_floor_glide_cm_per_s, 20.0);
   EXPECT_GT(slerped->floor_glide_cm_per_s, 2.0 * slerped->capture_floor_glide_cm_per_s);
+}
+
+// Skating counts every contact frame of the capture; the slide is the part a foot moving no
+// faster than a standing captured foot makes. The same walk a few frames late skates fast and
+// hardly slides (its feet land after the capture's); dragged sideways it slides as fast as it
+// is dragged.
+TEST(FillMetrics, SlideSeparatesAFootDraggedFromAStepOutOfTime) {
+  MOCAPFILL_REQUIRE_CORPUS();
+  const Scene walk = LoadWalk();
+  const MotionClip& truth = walk.clips[0];
+  const MotionClip sketch = *MakeSketch(walk.skeleton, truth, LegSpec());
+  const int hips = *walk.skeleton.Find("Hips");
+  MotionClip late = truth, dragged = truth;
+  const int delay = 3;
+  for (int f = 0; f < truth.num_frames; ++f)
+    for (int j = 0; j < truth.num_joints; ++j) {
+      late.rotation(f, j) = truth.rotation(std::max(0, f - delay), j);
+      late.translation(f, j) = truth.translation(std::max(0, f - delay), j);
+    }
+  const double drag_m_per_s = 0.1;
+  for (int f = 0; f < truth.num_frames; ++f) dragged.translation(f, hips).x() += drag_m_per_s * truth.time_s(f);
+  Result<FillMetrics> self = ScoreFill(walk.skeleton, truth, sketch, truth, hips);
+  Result<FillMetrics> lagging = ScoreFill(walk.skeleton, truth, sketch, late, hips);
+  Result<FillMetrics> sliding = ScoreFill(walk.skeleton, truth, sketch, dragged, hips);
+  ASSERT_TRUE(self.ok() && lagging.ok() && sliding.ok());
+  std::printf("skate / slide cm/s: capture %.2f / %.2f, %d frames late %.2f / %.2f, dragged at 10 cm/s %.2f / %.2f\n",
+              self->foot_skate_cm_per_s, self->foot_slide_cm_per_s, delay, lagging->foot_skate_cm_per_s,
+              lagging->foot_slide_cm_per_s, sliding->foot_skate_cm_per_s, sliding->foot_slide_cm_per_s);
+  EXPECT_DOUBLE_EQ(self->foot_slide_cm_per_s, self->foot_skate_cm_per_s);
+  EXPECT_GT(lagging->foot_skate_cm_per_s, 10.0);  // 15.58
+  EXPECT_LT(lagging->foot_slide_cm_per_s, 0.2 * lagging->foot_skate_cm_per_s);  // 2.21
+  EXPECT_NEAR(sliding->foot_slide_cm_per_s, 100.0 * drag_m_per_s, 3.0);
+  EXPECT_DOUBLE_EQ(sliding->foot_slide_cm_per_s, sliding->foot_skate_cm_per_s);
 }
 
 }  // namespace
