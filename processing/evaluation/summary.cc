@@ -8,22 +8,8 @@ namespace mocapfill {
 namespace {
 
 void AddWeighted(FillMetrics& sum, const FillMetrics& m, double w) {
-  sum.mpjpe_unkeyed_cm += w * m.mpjpe_unkeyed_cm;
-  sum.mpjpe_keyed_between_cm += w * m.mpjpe_keyed_between_cm;
-  sum.angle_unkeyed_deg += w * m.angle_unkeyed_deg;
-  sum.npss += w * m.npss;
-  sum.jitter_ratio += w * m.jitter_ratio;
-  sum.foot_skate_cm_per_s += w * m.foot_skate_cm_per_s;
-  sum.foot_skate_share += w * m.foot_skate_share;
-  sum.foot_slide_cm_per_s += w * m.foot_slide_cm_per_s;
-  sum.penetration_max_cm += w * m.penetration_max_cm;
-  sum.penetration_mean_cm += w * m.penetration_mean_cm;
-  sum.floor_glide_cm_per_s += w * m.floor_glide_cm_per_s;
-  sum.capture_floor_glide_cm_per_s += w * m.capture_floor_glide_cm_per_s;
-  sum.foot_peak_ratio += w * m.foot_peak_ratio;
-  sum.key_error_mean_deg += w * m.key_error_mean_deg;
+  for (const MetricField& field : AveragedMetricFields()) sum.*field.field += w * m.*field.field;
   sum.key_error_max_deg = std::max(sum.key_error_max_deg, m.key_error_max_deg);  // worst, not mean
-  sum.bone_length_error += w * m.bone_length_error;
   sum.unkeyed_joints = m.unkeyed_joints;
 }
 

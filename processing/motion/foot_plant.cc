@@ -233,6 +233,7 @@ void SpaceHoldsApart(const MotionClip& clip, const std::vector<double>& times, c
     Hold& a = holds[i];
     Hold& b = holds[i + 1];
     if (b.first - a.last >= 2 && Marked(pinned, a.last + 1, b.first - 1)) continue;  // the key rule holds there
+    const int a_last = a.last, b_first = b.first;
     while (a.first <= a.last && b.first <= b.last) {
       const Vector3d ca = CorrectionAt(a, track, a.last), cb = CorrectionAt(b, track, b.first);
       if ((cb - ca).norm() <= per_s * (times[b.first] - times[a.last])) break;
@@ -246,8 +247,8 @@ void SpaceHoldsApart(const MotionClip& clip, const std::vector<double>& times, c
         b.anchors.erase(b.anchors.begin());
       }
     }
-    if (a.first <= a.last) Reanchor(clip, track, pinned, a);
-    if (b.first <= b.last) Reanchor(clip, track, pinned, b);
+    if (a.last != a_last && a.first <= a.last) Reanchor(clip, track, pinned, a);
+    if (b.first != b_first && b.first <= b.last) Reanchor(clip, track, pinned, b);
   }
   holds.erase(std::remove_if(holds.begin(), holds.end(), [](const Hold& h) { return h.first > h.last; }), holds.end());
 }
